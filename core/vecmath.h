@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+//
+// Double-precision 3-vectors (geometry and integration, as Radiance's RREAL)
+// and an orthonormal frame. Plain value types; free functions for the algebra.
+#pragma once
+
+#include <cmath>
+#include <ostream>
+
+namespace rt {
+
+struct Vec3 {
+    double x = 0, y = 0, z = 0;
+
+    constexpr Vec3() = default;
+    constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
+
+    constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+
+    constexpr Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+    constexpr Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+    constexpr Vec3 operator-() const { return {-x, -y, -z}; }
+    constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
+    constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
+    constexpr Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
+    constexpr Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+    constexpr Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+    constexpr bool operator==(const Vec3&) const = default;
+};
+
+constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
+constexpr double Dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 Cross(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+constexpr double LengthSquared(const Vec3& v) { return Dot(v, v); }
+inline double Length(const Vec3& v) { return std::sqrt(Dot(v, v)); }
+/// Unit vector along v; v must not be zero (callers check, as Radiance's normalize()).
+inline Vec3 Normalize(const Vec3& v) { return v / Length(v); }
+inline Vec3 Abs(const Vec3& v) { return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}; }
+inline bool IsFinite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+inline Vec3 Min(const Vec3& a, const Vec3& b) {
+    return {std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)};
+}
+inline Vec3 Max(const Vec3& a, const Vec3& b) {
+    return {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)};
+}
+
+inline std::ostream& operator<<(std::ostream& os, const Vec3& v) {
+    return os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+}
+
+/// Axis-aligned box; empty when lo > hi.
+struct Bounds3 {
+    Vec3 lo{1e300, 1e300, 1e300};
+    Vec3 hi{-1e300, -1e300, -1e300};
+
+    bool Empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+    void Extend(const Vec3& p) { lo = Min(lo, p); hi = Max(hi, p); }
+    void Extend(const Bounds3& b) { lo = Min(lo, b.lo); hi = Max(hi, b.hi); }
+};
+
+/// Orthonormal frame with z along a given unit normal (Mitsuba's Frame).
+struct Frame {
+    Vec3 u, v, n;
+
+    Vec3 ToWorld(const Vec3& local) const { return u * local.x + v * local.y + n * local.z; }
+    Vec3 ToLocal(const Vec3& w) const { return {Dot(w, u), Dot(w, v), Dot(w, n)}; }
+};
+
+/// Radiance's getperpendicular() without randomisation: a unit vector
+/// perpendicular to unit `n`, built from the first axis (z, y, x order) whose
+/// component of n is below 0.6 (radiance-notes.md §0).
+inline Vec3 Perpendicular(const Vec3& n) {
+    Vec3 v;
+    for (int i = 2; i >= 0; --i) {
+        if (std::fabs(n[i]) < 0.6) {
+            v[i] = 1.0;
+            break;
+        }
+    }
+    return Normalize(Cross(v, n));
+}
+
+}  // namespace rt

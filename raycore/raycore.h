@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+//
+// Closest-hit and occlusion queries on a Scene, backed by Embree 3 (the only
+// module that includes Embree; its types never appear in this header).
+// Polygons become triangles, spheres/cones/cylinders/rings are Embree user
+// geometry with exact analytic intersection. Embree finds the candidate in
+// single precision; every reported hit is then recomputed in double precision
+// against the original ray, so hit points are accurate at any scale and far
+// from the origin. Distant sources are not geometry and are never reported.
+//
+//   RayCore core(scene);
+//   if (auto hit = core.Intersect(org, dir, 0.0)) { ... hit->surface ... }
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "core/vecmath.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct Hit {
+    double t = 0;      // distance along the unit ray direction
+    Vec3 point;        // org + t·dir, computed in double
+    Vec3 normal;       // unit geometric normal as the surface defines it (outward for a
+                       // sphere, inward for a bubble, the polygon's normal, ...), not flipped
+    int surface = -1;  // index into Scene::surfaces
+};
+
+class RayCore {
+public:
+    /// Builds acceleration structures for the scene's surfaces (only the kinds
+    /// present are created). The scene must outlive the RayCore. Throws rt::Error
+    /// if Embree fails.
+    explicit RayCore(const Scene& scene);
+    ~RayCore();
+    RayCore(const RayCore&) = delete;
+    RayCore& operator=(const RayCore&) = delete;
+
+    /// Nearest hit with kFtiny < t and, when tmax > 0, t < tmax (Radiance's rule:
+    /// distances <= FTINY are discarded). `dir` must be unit. Among hits within
+    /// kFtiny of each other, Radiance's coincidence rule picks the winner
+    /// (material beats void, opaque beats transparent, later modifier wins).
+    /// Thread-safe.
+    std::optional<Hit> Intersect(const Vec3& org, const Vec3& dir, double tmax) const;
+
+    /// Intersection with one surface only (source rays aim at their source).
+    std::optional<Hit> IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const;
+
+    /// True if anything lies in (kFtiny, tmax) along the ray. Thread-safe.
+    bool Occluded(const Vec3& org, const Vec3& dir, double tmax) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rt

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+//
+// Reads Radiance scene descriptions (radiance-notes.md §2.3) into a Scene:
+// comments, `!command` lines run through /bin/sh (their output parsed as scene
+// input), aliases, several files in order. Replaces Radiance's readobj.c and
+// the parts of oconv that build the scene.
+#pragma once
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct SceneLoadOptions {
+    /// Directory put first on PATH while `!command` lines run, so the bundled
+    /// genbox and xform (build/bin/) are found on machines without Radiance.
+    /// Empty: PATH unchanged.
+    std::string toolDirectory;
+};
+
+/// Parses one scene stream into raw objects; `name` is used in error locations.
+/// Runs `!command` lines (recursively parsing their output). Throws rt::Error
+/// with "file:line: ..." on malformed input.
+std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& name,
+                                          const SceneLoadOptions& options,
+                                          const WarningSink& warn);
+
+/// Resolves modifiers and aliases and interprets every object. Throws rt::Error
+/// naming the object's file:line for undefined modifiers, bad argument counts,
+/// unsupported types, degenerate geometry that Radiance treats as fatal.
+Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn);
+
+/// Reads the files in order ("-" is standard input) and builds the scene.
+Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& options,
+                const WarningSink& warn);
+
+}  // namespace rt

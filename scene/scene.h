@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+//
+// The scene as lazyrad uses it: Radiance's surfaces with their geometry
+// resolved, and the materials they refer to (radiance-notes.md §2.3–2.8).
+// Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
+//
+// Only what lazyrad can shade is represented: a scene using any other modifier
+// type is rejected at load time with "file:line: unsupported material type 'X'".
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/error.h"
+#include "core/vecmath.h"
+
+namespace rt {
+
+/// One primitive exactly as written in a scene file, before interpretation
+/// (Radiance's OBJREC): `modifier type identifier`, string args, real args.
+struct SceneObject {
+    std::string modifier;               // "void" or a previously defined modifier
+    std::string type;                   // "polygon", "plastic", "alias", ...
+    std::string name;                   // identifier
+    std::vector<std::string> sargs;     // string arguments (alias: the referenced name)
+    std::vector<double> rargs;          // real arguments
+    FileLoc loc;                        // where the primitive starts
+};
+
+enum class MaterialType {
+    Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface
+};
+
+/// A material (the only modifiers lazyrad supports). Argument counts are
+/// validated at load time against radiance-notes.md §2.6.
+struct Material {
+    std::string name;           // identifier; for an alias with its own modifier, the alias name
+    MaterialType type;
+    std::vector<double> args;   // real arguments as written
+    int alternate = -1;         // illum/mirror alternate material (index), -1 for none or void
+    FileLoc loc;
+};
+
+/// Returns Radiance's type name ("plastic", ...).
+const char* MaterialTypeName(MaterialType type);
+/// Radiance's istransp(): materials a coincident opaque surface wins against and
+/// that shadow rays may pass (trans, glass, dielectric, interface).
+bool IsTransparentType(MaterialType type);
+/// light, illum, glow, spotlight.
+bool IsLightType(MaterialType type);
+
+/// Flat polygon, vertices counter-clockwise seen from the front (§2.4).
+struct Polygon {
+    std::vector<Vec3> vertices;  // n >= 3, a repeated closing vertex removed
+    Vec3 normal;                 // unit, normalize(Σ (v[i-1]-v0)×(v[i]-v0))
+    double area = 0;             // ½ |Σ ...|
+    double offset = 0;           // plane: Dot(normal, p) == offset (mean over vertices)
+};
+
+/// sphere (outward normal) or bubble (inward normal).
+struct Sphere {
+    Vec3 center;
+    double radius = 0;  // > 0
+    bool inward = false;
+};
+
+/// cone/cup (r0 != r1) and cylinder/tube (r0 == r1); the surface between the two
+/// end planes, open at both ends.
+struct Cone {
+    Vec3 p0, p1;        // axis end points, p0 != p1
+    double r0 = 0, r1 = 0;  // radii at p0 and p1, >= 0, not both 0
+    bool inward = false;    // cup/tube
+};
+
+/// Flat disc or annulus through `center` facing `normal`.
+struct Ring {
+    Vec3 center;
+    Vec3 normal;        // unit
+    double r0 = 0, r1 = 0;  // inner < outer
+};
+
+/// Radiance `source`: a distant disc, not part of the geometry (never in a BVH).
+struct DistantSource {
+    Vec3 direction;          // unit, towards the source
+    double angleDegrees = 0; // full angular diameter
+};
+
+enum class SurfaceType { Polygon, Sphere, Bubble, Cone, Cup, Cylinder, Tube, Ring, Source };
+
+struct Surface {
+    std::string name;
+    SurfaceType type;
+    std::string modifierName;   // immediate modifier as written ("void" if none) — rtrace -om
+    int material = -1;          // index into Scene::materials after aliases; -1 for void
+    std::variant<Polygon, Sphere, Cone, Ring, DistantSource> shape;
+    FileLoc loc;
+};
+
+struct Scene {
+    std::vector<Material> materials;
+    std::vector<Surface> surfaces;   // in file order; includes distant sources
+    /// oconv's cube (§2.2): bounding box of all non-source surfaces grown by
+    /// 1e-5 each side; `cubeSize` is its largest extent. Drives -ar and miss distances.
+    Vec3 cubeOrigin;
+    double cubeSize = 0;
+};
+
+/// Axis-aligned bounds of a surface's geometry (empty for a distant source).
+Bounds3 SurfaceBounds(const Surface& surface);
+
+}  // namespace rt

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+//
+// The radiance integrator: Radiance's ray tree (raytrace.c), its materials
+// (normal.c, m_mirror.c, glass.c, dielectric.c, source.c m_light) and its
+// direct calculation (source.c, srcsamp.c, srcsupp.c). One Renderer per
+// thread or process: it carries source hit statistics and random state.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "ambient/options.h"
+#include "core/diagnostics.h"
+#include "raycore/raycore.h"
+#include "scene/scene.h"
+#include "shading/options.h"
+#include "shading/ray_result.h"
+
+namespace rt {
+
+class Renderer {
+public:
+    /// `scene` and `core` must outlive the Renderer. Finds the light sources
+    /// (warning "no light sources found" through `warn` when there are none).
+    Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+             const AmbientOptions& ambient, WarningSink warn);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Evaluates one rtrace input ray. `dir` must be unit. `rmax` > 0 limits the
+    /// ray length (-ld); 0 means unlimited. `rayIndex` (position in the input)
+    /// seeds the random numbers so results do not depend on scheduling.
+    /// With IrradianceMode::Immediate the origin and direction are taken as a
+    /// measurement point and surface normal (-I, radiance-notes.md §1.9).
+    RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax,
+                         std::uint64_t rayIndex);
+
+    /// Called for every ray when its evaluation finishes (post-order: children
+    /// before parents), for rtrace's -ot/-oT output. `shadowRays` also reports
+    /// shadow rays (-oT). Pass an empty function to turn tracing off.
+    void SetTraceCallback(std::function<void(const RayResult&)> callback, bool shadowRays);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rt
