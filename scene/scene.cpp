@@ -1,1 +1,66 @@
-// placeholder: being written
+// SPDX-License-Identifier: MIT
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+namespace {
+
+// Exact extent of a circle (centre c, unit normal n, radius r): along axis k the
+// circle reaches r·sqrt(1 − n_k²) from its centre.
+void ExtendByCircle(Bounds3& bounds, const Vec3& center, const Vec3& normal, double radius) {
+    Vec3 half;
+    for (int k = 0; k < 3; ++k) half[k] = radius * std::sqrt(std::max(0.0, 1.0 - normal[k] * normal[k]));
+    bounds.Extend(center - half);
+    bounds.Extend(center + half);
+}
+
+}  // namespace
+
+const char* MaterialTypeName(MaterialType type) {
+    switch (type) {
+        case MaterialType::Plastic: return "plastic";
+        case MaterialType::Metal: return "metal";
+        case MaterialType::Trans: return "trans";
+        case MaterialType::Light: return "light";
+        case MaterialType::Illum: return "illum";
+        case MaterialType::Glow: return "glow";
+        case MaterialType::Spotlight: return "spotlight";
+        case MaterialType::Mirror: return "mirror";
+        case MaterialType::Glass: return "glass";
+        case MaterialType::Dielectric: return "dielectric";
+        case MaterialType::Interface: return "interface";
+    }
+    return "unknown";
+}
+
+bool IsTransparentType(MaterialType type) {
+    return type == MaterialType::Trans || type == MaterialType::Glass ||
+           type == MaterialType::Dielectric || type == MaterialType::Interface;
+}
+
+bool IsLightType(MaterialType type) {
+    return type == MaterialType::Light || type == MaterialType::Illum ||
+           type == MaterialType::Glow || type == MaterialType::Spotlight;
+}
+
+Bounds3 SurfaceBounds(const Surface& surface) {
+    Bounds3 bounds;
+    if (const auto* polygon = std::get_if<Polygon>(&surface.shape)) {
+        for (const Vec3& v : polygon->vertices) bounds.Extend(v);
+    } else if (const auto* sphere = std::get_if<Sphere>(&surface.shape)) {
+        const Vec3 r(sphere->radius, sphere->radius, sphere->radius);
+        bounds.Extend(sphere->center - r);
+        bounds.Extend(sphere->center + r);
+    } else if (const auto* cone = std::get_if<Cone>(&surface.shape)) {
+        const Vec3 axis = Normalize(cone->p1 - cone->p0);
+        ExtendByCircle(bounds, cone->p0, axis, cone->r0);
+        ExtendByCircle(bounds, cone->p1, axis, cone->r1);
+    } else if (const auto* ring = std::get_if<Ring>(&surface.shape)) {
+        ExtendByCircle(bounds, ring->center, ring->normal, ring->r1);
+    }
+    return bounds;  // distant source: empty
+}
+
+}  // namespace rt

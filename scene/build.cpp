@@ -1,0 +1,410 @@
+// SPDX-License-Identifier: MIT
+//
+// BuildScene(): what oconv and rtrace do with the objects readobj() returns —
+// modifier and alias resolution (readobj.c, modobject.c), material argument
+// checks (m_*.c), surface set-up (face.c, cone.c, o_sphere, srcsupp.c) and
+// oconv's bounding cube (oconv.c, bbox.c).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include "core/conventions.h"
+#include "scene/loader.h"
+#include "scene/object_types.h"
+#include "scene/reader.h"
+
+namespace rt {
+namespace {
+
+/// oconv's OMARGIN: the cube is grown by this on every side.
+constexpr double kCubeMargin = 10 * kFtiny;
+/// Radiance's VERTEPS (double build): tolerated relative distance of a vertex
+/// from the polygon's plane before "non-planar vertex" is reported.
+constexpr double kVertexEpsilon = 1e-5;
+
+struct MaterialSpec {
+    const char* name;
+    MaterialType type;
+    int minReals, maxReals;
+    int maxStrings;  // illum/mirror take an optional alternate material
+};
+
+constexpr MaterialSpec kMaterialSpecs[] = {
+    {"plastic", MaterialType::Plastic, 5, 5, 0},
+    {"metal", MaterialType::Metal, 5, 5, 0},
+    {"trans", MaterialType::Trans, 7, 7, 0},
+    {"light", MaterialType::Light, 3, 3, 0},
+    {"illum", MaterialType::Illum, 3, 3, 1},
+    {"glow", MaterialType::Glow, 4, 4, 0},
+    {"spotlight", MaterialType::Spotlight, 7, 7, 0},
+    {"mirror", MaterialType::Mirror, 3, 3, 1},
+    {"glass", MaterialType::Glass, 3, 4, 0},
+    {"dielectric", MaterialType::Dielectric, 5, 5, 0},
+    {"interface", MaterialType::Interface, 8, 8, 0},
+};
+
+const MaterialSpec* FindMaterialSpec(const std::string& type) {
+    for (const MaterialSpec& spec : kMaterialSpecs) {
+        if (type == spec.name) return &spec;
+    }
+    return nullptr;
+}
+
+std::string Describe(const SceneObject& object) {
+    return object.type + " \"" + PrintableWord(object.name) + "\"";
+}
+
+/// One modifier definition, in file order. Mirrors Radiance's OBJREC enough to
+/// tell a pure alias synonym from an alias that re-modifies its reference.
+struct ModifierDef {
+    int material = -1;  // index into Scene::materials
+    int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
+};
+
+class SceneBuilder {
+public:
+    explicit SceneBuilder(const WarningSink& warn) : warn_(warn) {}
+
+    void Add(const SceneObject& object) {
+        if (object.type == "alias") {
+            AddAlias(object);
+        } else if (!IsSurfaceObjectType(object.type)) {
+            AddMaterial(object);
+        } else {
+            AddSurface(object);
+        }
+    }
+
+    Scene Finish() {
+        SetCube();
+        return std::move(scene_);
+    }
+
+private:
+    void Warn(const SceneObject& object, const std::string& what) const {
+        if (warn_) warn_(object.loc.ToString() + ": " + Describe(object) + ": " + what);
+    }
+    [[noreturn]] void Fail(const SceneObject& object, const std::string& what) const {
+        ThrowUserError(object.loc, Describe(object) + ": " + what);
+    }
+    [[noreturn]] void BadArgs(const SceneObject& object) const {
+        ThrowUserError(object.loc, "bad number of arguments for " + Describe(object));
+    }
+
+    std::optional<int> Lookup(const std::string& name) const {
+        const auto it = byName_.find(name);
+        if (it == byName_.end()) return std::nullopt;
+        return it->second;
+    }
+
+    /// Index of the modifier definition `name` refers to now; -1 for void.
+    int ResolveModifier(const SceneObject& object) const {
+        if (object.modifier == "void") return -1;
+        const auto def = Lookup(object.modifier);
+        if (!def) {
+            ThrowUserError(object.loc,
+                           "undefined modifier \"" + PrintableWord(object.modifier) + "\"");
+        }
+        return *def;
+    }
+
+    void Define(const std::string& name, ModifierDef def) {
+        defs_.push_back(def);
+        byName_[name] = static_cast<int>(defs_.size()) - 1;
+    }
+
+    void AddAlias(const SceneObject& object) {
+        const std::string& reference = object.sargs.at(0);
+        const auto ref = Lookup(reference);
+        if (!ref) {
+            ThrowUserError(object.loc, "undefined alias reference \"" + PrintableWord(reference) +
+                                           "\" in alias \"" + PrintableWord(object.name) + "\"");
+        }
+        const ModifierDef& target = defs_[static_cast<std::size_t>(*ref)];
+        const int modifier = object.modifier == "inherit" ? target.modifier : ResolveModifier(object);
+        if (modifier == target.modifier) {
+            // Pure synonym (readobj.c): shading goes straight to the reference.
+            Define(object.name, ModifierDef{target.material, *ref});
+            return;
+        }
+        if (modifier != -1) {
+            ThrowUserError(object.loc,
+                           "alias \"" + PrintableWord(object.name) + "\" puts modifier \"" +
+                               PrintableWord(object.modifier) + "\" on \"" +
+                               PrintableWord(reference) +
+                               "\": materials with a non-void modifier (patterns, textures) "
+                               "are not supported");
+        }
+        // Same type and arguments as the reference, under the alias's own name.
+        Material copy = scene_.materials[static_cast<std::size_t>(target.material)];
+        copy.name = object.name;
+        copy.loc = object.loc;
+        scene_.materials.push_back(std::move(copy));
+        Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1});
+    }
+
+    void AddMaterial(const SceneObject& object) {
+        const MaterialSpec* spec = FindMaterialSpec(object.type);
+        if (spec == nullptr) {
+            ThrowUserError(object.loc, "unsupported material type '" + object.type + "'");
+        }
+        const int modifier = ResolveModifier(object);
+        if (modifier != -1) {
+            ThrowUserError(object.loc, Describe(object) + " has modifier \"" +
+                                           PrintableWord(object.modifier) +
+                                           "\": materials with a non-void modifier (patterns, "
+                                           "textures) are not supported");
+        }
+        const int nreals = static_cast<int>(object.rargs.size());
+        if (static_cast<int>(object.sargs.size()) > spec->maxStrings || nreals < spec->minReals ||
+            nreals > spec->maxReals) {
+            BadArgs(object);
+        }
+        Material material;
+        material.name = object.name;
+        material.type = spec->type;
+        material.args = object.rargs;
+        material.loc = object.loc;
+        if (!object.sargs.empty() && object.sargs[0] != "void") {
+            const auto alternate = Lookup(object.sargs[0]);
+            if (!alternate) {
+                ThrowUserError(object.loc, "undefined alternate material \"" +
+                                               PrintableWord(object.sargs[0]) + "\" for " +
+                                               Describe(object));
+            }
+            material.alternate = defs_[static_cast<std::size_t>(*alternate)].material;
+        }
+        if (spec->type == MaterialType::Spotlight) {
+            if (material.args[3] <= kFtiny) Fail(object, "zero angle");
+            if (LengthSquared(Vec3(material.args[4], material.args[5], material.args[6])) == 0) {
+                Fail(object, "zero focus vector");
+            }
+        }
+        scene_.materials.push_back(std::move(material));
+        Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1});
+    }
+
+    void AddSurface(const SceneObject& object) {
+        if (object.type == "instance" || object.type == "mesh") {
+            ThrowUserError(object.loc, "unsupported object type '" + object.type +
+                                           "' (octree instances and meshes are not supported)");
+        }
+        const int modifier = ResolveModifier(object);
+        if (!object.sargs.empty()) BadArgs(object);
+
+        Surface surface;
+        surface.name = object.name;
+        surface.modifierName = object.modifier;
+        surface.material = modifier == -1 ? -1 : defs_[static_cast<std::size_t>(modifier)].material;
+        surface.loc = object.loc;
+        bool keep = true;
+        if (object.type == "polygon") {
+            keep = SetPolygon(object, surface);
+        } else if (object.type == "sphere" || object.type == "bubble") {
+            SetSphere(object, surface);
+        } else if (object.type == "ring") {
+            SetRing(object, surface);
+        } else if (object.type == "source") {
+            SetSource(object, surface);
+        } else {
+            SetCone(object, surface);
+        }
+        if (!keep) return;
+        // Geometry from huge coordinates can overflow even though every argument is finite.
+        const Bounds3 bounds = SurfaceBounds(surface);
+        if (!bounds.Empty() && (!IsFinite(bounds.lo) || !IsFinite(bounds.hi))) {
+            Fail(object, "coordinates too large");
+        }
+        scene_.surfaces.push_back(std::move(surface));
+    }
+
+    bool SetPolygon(const SceneObject& object, Surface& surface) {
+        const auto& a = object.rargs;
+        if (a.size() < 9 || a.size() % 3 != 0) BadArgs(object);
+        Polygon polygon;
+        for (std::size_t i = 0; i < a.size(); i += 3) polygon.vertices.emplace_back(a[i], a[i + 1], a[i + 2]);
+        auto& v = polygon.vertices;
+        if (v.size() > 3 && LengthSquared(v.back() - v.front()) <= kFtiny * kFtiny) v.pop_back();
+
+        Vec3 sum;
+        for (std::size_t i = 2; i < v.size(); ++i) sum += Cross(v[i - 1] - v[0], v[i] - v[0]);
+        const double length = Length(sum);
+        if (!std::isfinite(length)) Fail(object, "coordinates too large");
+        if (length == 0) {
+            Warn(object, "zero area");
+            return false;
+        }
+        polygon.normal = sum / length;
+        polygon.area = 0.5 * length;
+
+        double offsetSum = 0;
+        double size = 0;
+        for (const Vec3& p : v) {
+            offsetSum += Dot(polygon.normal, p);
+            size = std::max(size, Length(p - v[0]));
+        }
+        polygon.offset = offsetSum / static_cast<double>(v.size());
+        bool nonPlanar = false;
+        for (const Vec3& p : v) {
+            nonPlanar = nonPlanar || std::fabs(Dot(polygon.normal, p) - polygon.offset) > kVertexEpsilon * size;
+        }
+        if (nonPlanar && v.size() > 3) Warn(object, "non-planar vertex");
+        surface.type = SurfaceType::Polygon;
+        surface.shape = std::move(polygon);
+        return true;
+    }
+
+    void SetSphere(const SceneObject& object, Surface& surface) {
+        const auto& a = object.rargs;
+        if (a.size() != 4) BadArgs(object);
+        Sphere sphere;
+        sphere.center = Vec3(a[0], a[1], a[2]);
+        sphere.radius = a[3];
+        sphere.inward = object.type == "bubble";
+        if (sphere.radius < -kFtiny) {
+            Warn(object, "negative radius");
+            sphere.radius = -sphere.radius;
+            sphere.inward = !sphere.inward;
+        } else if (sphere.radius <= kFtiny) {
+            Fail(object, "zero radius");
+        }
+        surface.type = sphere.inward ? SurfaceType::Bubble : SurfaceType::Sphere;
+        surface.shape = sphere;
+    }
+
+    static int Sign(double r) { return r < -kFtiny ? -1 : (r > kFtiny ? 1 : 0); }
+
+    void SetCone(const SceneObject& object, Surface& surface) {
+        const auto& a = object.rargs;
+        const bool cylinderLike = object.type == "cylinder" || object.type == "tube";
+        if (a.size() != (cylinderLike ? 7u : 8u)) BadArgs(object);
+        Cone cone;
+        cone.p0 = Vec3(a[0], a[1], a[2]);
+        cone.p1 = Vec3(a[3], a[4], a[5]);
+        cone.inward = object.type == "cup" || object.type == "tube";
+        bool cylinder = cylinderLike;
+        if (cylinderLike) {
+            double r = a[6];
+            if (r < -kFtiny) {
+                Warn(object, "negative radius");
+                cone.inward = !cone.inward;
+                r = -r;
+            } else if (r <= kFtiny) {
+                Fail(object, "illegal radius");
+            }
+            cone.r0 = cone.r1 = r;
+        } else {
+            const int sign0 = Sign(a[6]), sign1 = Sign(a[7]);
+            if (sign0 + sign1 == 0) Fail(object, "illegal radii");
+            if (sign0 < 0 || sign1 < 0) {
+                Warn(object, "negative radii");
+                cone.inward = !cone.inward;
+            }
+            const double r0 = a[6] * sign0, r1 = a[7] * sign1;
+            if (r1 - r0 > kFtiny) {
+                cone.r0 = r0;
+                cone.r1 = r1;
+            } else if (r0 - r1 > kFtiny) {
+                // cone.c keeps the narrow end first.
+                std::swap(cone.p0, cone.p1);
+                cone.r0 = r1;
+                cone.r1 = r0;
+            } else {
+                cylinder = true;
+                cone.r0 = cone.r1 = r0;
+            }
+        }
+        if (LengthSquared(cone.p1 - cone.p0) == 0) Fail(object, "zero length");
+        surface.type = cylinder ? (cone.inward ? SurfaceType::Tube : SurfaceType::Cylinder)
+                                : (cone.inward ? SurfaceType::Cup : SurfaceType::Cone);
+        surface.shape = cone;
+    }
+
+    void SetRing(const SceneObject& object, Surface& surface) {
+        const auto& a = object.rargs;
+        if (a.size() != 8) BadArgs(object);
+        const int sign0 = Sign(a[6]), sign1 = Sign(a[7]);
+        if (sign0 < 0 || sign1 < 0) Fail(object, "negative radii");
+        const double r0 = a[6] * sign0, r1 = a[7] * sign1;
+        if (std::fabs(r1 - r0) <= kFtiny) Fail(object, "illegal radii (inner and outer radius equal)");
+        const Vec3 normal(a[3], a[4], a[5]);
+        if (LengthSquared(normal) == 0) Fail(object, "zero normal");
+        Ring ring;
+        ring.center = Vec3(a[0], a[1], a[2]);
+        ring.normal = Normalize(normal);
+        ring.r0 = std::min(r0, r1);
+        ring.r1 = std::max(r0, r1);
+        surface.type = SurfaceType::Ring;
+        surface.shape = ring;
+    }
+
+    void SetSource(const SceneObject& object, Surface& surface) {
+        const auto& a = object.rargs;
+        if (a.size() != 4) BadArgs(object);
+        const Vec3 direction(a[0], a[1], a[2]);
+        if (LengthSquared(direction) == 0) Fail(object, "zero direction");
+        if (kPi / 180.0 / 2.0 * a[3] <= kFtiny) Fail(object, "zero size");
+        surface.type = SurfaceType::Source;
+        surface.shape = DistantSource{Normalize(direction), a[3]};
+    }
+
+    /// oconv's cube. Its circle2bbox() (bbox.c) is not the exact extent of a
+    /// circle, so cones and rings are bounded here as oconv does, not with
+    /// SurfaceBounds(), to reproduce Radiance's cube size (and so -ar) exactly.
+    void SetCube() {
+        Bounds3 bounds;
+        const auto circle = [&bounds](const Vec3& center, const Vec3& normal, double radius) {
+            for (int i = 0; i < 3; ++i) {
+                Vec3 axis;
+                axis[i] = 1;
+                const Vec3 v = Cross(normal, axis);
+                if (LengthSquared(v) == 0) continue;
+                const Vec3 d = Normalize(v) * radius;
+                bounds.Extend(center + d);
+                bounds.Extend(center - d);
+            }
+        };
+        for (const Surface& surface : scene_.surfaces) {
+            if (const auto* cone = std::get_if<Cone>(&surface.shape)) {
+                const Vec3 axis = Normalize(cone->p1 - cone->p0);
+                circle(cone->p0, axis, cone->r0);
+                circle(cone->p1, axis, cone->r1);
+            } else if (const auto* ring = std::get_if<Ring>(&surface.shape)) {
+                circle(ring->center, ring->normal, ring->r1);
+            } else {
+                bounds.Extend(SurfaceBounds(surface));
+            }
+        }
+        if (bounds.Empty()) {
+            // No local geometry at all (empty scene or distant sources only): oconv
+            // would leave a zero-size cube; a unit cube centred on the origin keeps
+            // distances derived from the cube (-ar, miss lengths) finite and sensible.
+            scene_.cubeOrigin = Vec3(-0.5, -0.5, -0.5);
+            scene_.cubeSize = 1;
+            return;
+        }
+        const Vec3 lo = bounds.lo - Vec3(kCubeMargin, kCubeMargin, kCubeMargin);
+        const Vec3 hi = bounds.hi + Vec3(kCubeMargin, kCubeMargin, kCubeMargin);
+        double size = 0;
+        for (int i = 0; i < 3; ++i) size = std::max(size, hi[i] - lo[i]);
+        for (int i = 0; i < 3; ++i) scene_.cubeOrigin[i] = (hi[i] + lo[i] - size) * 0.5;
+        scene_.cubeSize = size;
+    }
+
+    const WarningSink& warn_;
+    Scene scene_;
+    std::vector<ModifierDef> defs_;
+    std::unordered_map<std::string, int> byName_;
+};
+
+}  // namespace
+
+Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn) {
+    SceneBuilder builder(warn);
+    for (const SceneObject& object : objects) builder.Add(object);
+    return builder.Finish();
+}
+
+}  // namespace rt

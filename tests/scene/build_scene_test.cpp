@@ -1,0 +1,320 @@
+// SPDX-License-Identifier: MIT
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/conventions.h"
+#include "scene_test_util.h"
+
+namespace rt {
+namespace {
+
+using testing::BuildError;
+using testing::BuildText;
+
+constexpr const char* kPlastic = "void plastic white 0 0 5 .5 .5 .5 0 0\n";
+
+void ExpectNear(const Vec3& a, const Vec3& b, double tolerance = 1e-12) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+TEST(BuildScene, MaterialsAndArgumentCounts) {
+    const Scene scene = BuildText(
+        "void plastic p 0 0 5 1 1 1 0 0\n"
+        "void metal m 0 0 5 1 1 1 .9 .1\n"
+        "void trans t 0 0 7 1 1 1 0 0 .5 .5\n"
+        "void light l 0 0 3 10 10 10\n"
+        "void illum i 1 p 0 3 1 1 1\n"
+        "void illum i2 1 void 0 3 1 1 1\n"
+        "void glow g 0 0 4 1 1 1 0\n"
+        "void spotlight s 0 0 7 1 1 1 30 0 0 -1\n"
+        "void mirror mi 0 0 3 .9 .9 .9\n"
+        "void glass g3 0 0 3 .9 .9 .9\n"
+        "void glass g4 0 0 4 .9 .9 .9 1.5\n"
+        "void dielectric d 0 0 5 .9 .9 .9 1.5 0\n"
+        "void interface f 0 0 8 1 1 1 1.3 1 1 1 1\n");
+    ASSERT_EQ(scene.materials.size(), 13u);
+    EXPECT_EQ(scene.materials[4].type, MaterialType::Illum);
+    EXPECT_EQ(scene.materials[4].alternate, 0);
+    EXPECT_EQ(scene.materials[5].alternate, -1);
+    EXPECT_EQ(scene.materials[12].type, MaterialType::Interface);
+    EXPECT_EQ(scene.materials[12].loc.ToString(), "t.rad:13");
+    EXPECT_TRUE(scene.surfaces.empty());
+}
+
+TEST(BuildScene, WrongArgumentCountsNameTheMaterial) {
+    EXPECT_EQ(BuildError("\nvoid plastic p 0 0 4 1 1 1 0\n"),
+              "t.rad:2: bad number of arguments for plastic \"p\"");
+    EXPECT_EQ(BuildError("void glass g 0 0 5 1 1 1 1.5 0\n"),
+              "t.rad:1: bad number of arguments for glass \"g\"");
+    EXPECT_EQ(BuildError("void metal m 1 x 0 5 1 1 1 0 0\n"),
+              "t.rad:1: bad number of arguments for metal \"m\"");
+    EXPECT_EQ(BuildError("void illum i 2 a b 0 3 1 1 1\n"),
+              "t.rad:1: bad number of arguments for illum \"i\"");
+    EXPECT_EQ(BuildError("void interface f 0 0 4 1 1 1 1\n"),
+              "t.rad:1: bad number of arguments for interface \"f\"");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white sphere s 0 0 3 0 0 0\n"),
+              "t.rad:2: bad number of arguments for sphere \"s\"");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white polygon p 0 0 6 0 0 0 1 0 0\n"),
+              "t.rad:2: bad number of arguments for polygon \"p\"");
+    EXPECT_EQ(BuildError("void spotlight s 0 0 7 1 1 1 30 0 0 0\n"),
+              "t.rad:1: spotlight \"s\": zero focus vector");
+}
+
+TEST(BuildScene, UnsupportedTypesAreRejected) {
+    EXPECT_EQ(BuildError("void BRTDfunc b 10 0 0 0 0 0 0 0 0 0 . 0 9 0 0 0 0 0 0 0 0 0\n"),
+              "t.rad:1: unsupported material type 'BRTDfunc'");
+    EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
+              "t.rad:1: unsupported material type 'antimatter'");
+    EXPECT_EQ(BuildError("void colorfunc c 4 r g b . 0 0\n"),
+              "t.rad:1: unsupported material type 'colorfunc'");
+    EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
+    EXPECT_EQ(BuildError("void instance i 1 x.oct 0 0\n"),
+              "t.rad:1: unsupported object type 'instance' (octree instances and meshes are not "
+              "supported)");
+    EXPECT_EQ(BuildError("void mesh m 1 x.rtm 0 0\n"),
+              "t.rad:1: unsupported object type 'mesh' (octree instances and meshes are not "
+              "supported)");
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
+              "t.rad:2: plastic \"b\" has modifier \"a\": materials with a non-void modifier "
+              "(patterns, textures) are not supported");
+}
+
+TEST(BuildScene, UndefinedModifiers) {
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "\nred sphere s 0 0 4 0 0 0 1\n"),
+              "t.rad:3: undefined modifier \"red\"");
+    // A modifier defined after its use does not count (lookup at parse time).
+    EXPECT_EQ(BuildError("p sphere s 0 0 4 0 0 0 1\nvoid plastic p 0 0 5 1 1 1 0 0\n"),
+              "t.rad:1: undefined modifier \"p\"");
+    // Surfaces are not modifiers.
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white sphere s 0 0 4 0 0 0 1\ns sphere t 0 0 4 0 0 0 1\n"),
+              "t.rad:3: undefined modifier \"s\"");
+    EXPECT_EQ(BuildError("void illum i 1 nothing 0 3 1 1 1\n"),
+              "t.rad:1: undefined alternate material \"nothing\" for illum \"i\"");
+    EXPECT_EQ(BuildError("void alias a b\n"),
+              "t.rad:1: undefined alias reference \"b\" in alias \"a\"");
+}
+
+TEST(BuildScene, MostRecentDefinitionWins) {
+    const Scene scene = BuildText(
+        "void plastic m 0 0 5 1 0 0 0 0\n"
+        "m sphere a 0 0 4 0 0 0 1\n"
+        "void metal m 0 0 5 0 1 0 0 0\n"
+        "m sphere b 0 0 4 3 0 0 1\n"
+        "void sphere c 0 0 4 6 0 0 1\n");
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    EXPECT_EQ(scene.surfaces[0].material, 0);
+    EXPECT_EQ(scene.surfaces[1].material, 1);
+    EXPECT_EQ(scene.surfaces[1].modifierName, "m");
+    EXPECT_EQ(scene.surfaces[2].material, -1);
+    EXPECT_EQ(scene.surfaces[2].modifierName, "void");
+}
+
+TEST(BuildScene, AliasesResolveAsRadianceDoes) {
+    const Scene scene = BuildText(
+        "void plastic base 0 0 5 .2 .3 .4 0 0\n"
+        "inherit alias syn base\n"          // pure synonym
+        "void alias same base\n"            // same modifier as base (void): synonym
+        "void alias copy syn\n"             // syn's modifier is base, not void: a copy
+        "syn polygon p1 0 0 9 0 0 0 1 0 0 0 1 0\n"
+        "same polygon p2 0 0 9 0 0 0 1 0 0 0 1 0\n"
+        "copy polygon p3 0 0 9 0 0 0 1 0 0 0 1 0\n");
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    EXPECT_EQ(scene.surfaces[0].material, 0);
+    EXPECT_EQ(scene.surfaces[0].modifierName, "syn");
+    EXPECT_EQ(scene.surfaces[1].material, 0);
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.surfaces[2].material, 1);
+    EXPECT_EQ(scene.materials[1].name, "copy");
+    EXPECT_EQ(scene.materials[1].type, MaterialType::Plastic);
+    EXPECT_EQ(scene.materials[1].args, scene.materials[0].args);
+    EXPECT_EQ(scene.surfaces[2].modifierName, "copy");
+
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\nvoid plastic b 0 0 5 1 1 1 0 0\n"
+                         "a alias c b\n"),
+              "t.rad:3: alias \"c\" puts modifier \"a\" on \"b\": materials with a non-void "
+              "modifier (patterns, textures) are not supported");
+}
+
+TEST(BuildScene, PolygonNormalAreaOffset) {
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                  "white polygon tri 0 0 9  0 0 2  2 0 2  0 3 2\n"
+                                  "white polygon quad 0 0 15  0 0 0  0 1 0  0 1 1  0 0 1  0 0 0\n");
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    const auto& tri = std::get<Polygon>(scene.surfaces[0].shape);
+    ExpectNear(tri.normal, {0, 0, 1});
+    EXPECT_DOUBLE_EQ(tri.area, 3.0);
+    EXPECT_DOUBLE_EQ(tri.offset, 2.0);
+    const auto& quad = std::get<Polygon>(scene.surfaces[1].shape);
+    EXPECT_EQ(quad.vertices.size(), 4u);  // closing vertex dropped
+    ExpectNear(quad.normal, {1, 0, 0});
+    EXPECT_DOUBLE_EQ(quad.area, 1.0);
+    EXPECT_EQ(scene.surfaces[1].type, SurfaceType::Polygon);
+}
+
+TEST(BuildScene, ConcavePolygonAccepted) {
+    // An L shape (area 3), listed clockwise seen from +z: normal -z.
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                  "white polygon ell 0 0 18  0 0 0  0 2 0  1 2 0  1 1 0  2 1 0  2 0 0\n");
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    const auto& ell = std::get<Polygon>(scene.surfaces[0].shape);
+    EXPECT_EQ(ell.vertices.size(), 6u);
+    ExpectNear(ell.normal, {0, 0, -1});
+    EXPECT_DOUBLE_EQ(ell.area, 3.0);
+}
+
+TEST(BuildScene, DegeneratePolygonsWarn) {
+    std::vector<std::string> warnings;
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                      "white polygon flat 0 0 9  0 0 0  1 1 1  2 2 2\n"
+                                      "white polygon bent 0 0 12  0 0 0  1 0 0  1 1 0.1  0 1 0\n",
+                                  &warnings);
+    ASSERT_EQ(scene.surfaces.size(), 1u);  // zero-area polygon skipped
+    EXPECT_EQ(scene.surfaces[0].name, "bent");
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_EQ(warnings[0], "t.rad:2: polygon \"flat\": zero area");
+    EXPECT_EQ(warnings[1], "t.rad:3: polygon \"bent\": non-planar vertex");
+}
+
+TEST(BuildScene, SpheresAndBubbles) {
+    std::vector<std::string> warnings;
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                      "white sphere s 0 0 4 1 2 3 2\n"
+                                      "white bubble b 0 0 4 0 0 0 1\n"
+                                      "white sphere n 0 0 4 0 0 0 -1.5\n",
+                                  &warnings);
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    EXPECT_EQ(scene.surfaces[0].type, SurfaceType::Sphere);
+    EXPECT_FALSE(std::get<Sphere>(scene.surfaces[0].shape).inward);
+    EXPECT_EQ(scene.surfaces[1].type, SurfaceType::Bubble);
+    EXPECT_TRUE(std::get<Sphere>(scene.surfaces[1].shape).inward);
+    EXPECT_EQ(scene.surfaces[2].type, SurfaceType::Bubble);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(scene.surfaces[2].shape).radius, 1.5);
+    EXPECT_EQ(warnings, std::vector<std::string>{"t.rad:4: sphere \"n\": negative radius"});
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white sphere z 0 0 4 0 0 0 1e-7\n"),
+              "t.rad:2: sphere \"z\": zero radius");
+}
+
+TEST(BuildScene, ConesFollowConeC) {
+    std::vector<std::string> warnings;
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                      "white cone wide_first 0 0 8  0 0 0  0 0 2  1 .5\n"
+                                      "white cone same 0 0 8  0 0 0  0 0 2  1 1\n"
+                                      "white cup neg 0 0 8  0 0 0  0 0 2  -1 0\n"
+                                      "white cylinder c 0 0 7  0 0 0  1 0 0  .5\n"
+                                      "white tube t 0 0 7  0 0 0  1 0 0  -.5\n",
+                                  &warnings);
+    ASSERT_EQ(scene.surfaces.size(), 5u);
+    const auto& wide = std::get<Cone>(scene.surfaces[0].shape);
+    EXPECT_EQ(scene.surfaces[0].type, SurfaceType::Cone);
+    ExpectNear(wide.p0, {0, 0, 2});  // narrow end first
+    EXPECT_DOUBLE_EQ(wide.r0, .5);
+    EXPECT_DOUBLE_EQ(wide.r1, 1);
+    EXPECT_EQ(scene.surfaces[1].type, SurfaceType::Cylinder);
+    EXPECT_EQ(scene.surfaces[2].type, SurfaceType::Cone);  // negative radii invert the cup
+    EXPECT_FALSE(std::get<Cone>(scene.surfaces[2].shape).inward);
+    EXPECT_EQ(scene.surfaces[3].type, SurfaceType::Cylinder);
+    EXPECT_EQ(scene.surfaces[4].type, SurfaceType::Cylinder);  // negative tube radius
+    EXPECT_EQ(warnings, (std::vector<std::string>{"t.rad:4: cup \"neg\": negative radii",
+                                                  "t.rad:6: tube \"t\": negative radius"}));
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white cone z 0 0 8 1 1 1 1 1 1 1 2\n"),
+              "t.rad:2: cone \"z\": zero length");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white cone z 0 0 8 0 0 0 0 0 1 1 -1\n"),
+              "t.rad:2: cone \"z\": illegal radii");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white cylinder z 0 0 7 0 0 0 0 0 1 0\n"),
+              "t.rad:2: cylinder \"z\": illegal radius");
+}
+
+TEST(BuildScene, RingsAndSources) {
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                  "white ring r 0 0 8  1 2 3  0 0 2  2 .5\n"
+                                  "void light l 0 0 3 1 1 1\n"
+                                  "l source sun 0 0 4  0 3 4  0.5\n");
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    const auto& ring = std::get<Ring>(scene.surfaces[0].shape);
+    ExpectNear(ring.normal, {0, 0, 1});
+    EXPECT_DOUBLE_EQ(ring.r0, .5);
+    EXPECT_DOUBLE_EQ(ring.r1, 2);
+    const auto& sun = std::get<DistantSource>(scene.surfaces[1].shape);
+    EXPECT_EQ(scene.surfaces[1].type, SurfaceType::Source);
+    ExpectNear(sun.direction, {0, .6, .8});
+    EXPECT_DOUBLE_EQ(sun.angleDegrees, .5);
+    EXPECT_EQ(scene.surfaces[1].material, 1);
+
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white ring r 0 0 8 0 0 0 0 0 1 1 1\n"),
+              "t.rad:2: ring \"r\": illegal radii (inner and outer radius equal)");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white ring r 0 0 8 0 0 0 0 0 1 -1 2\n"),
+              "t.rad:2: ring \"r\": negative radii");
+    EXPECT_EQ(BuildError(std::string(kPlastic) + "white ring r 0 0 8 0 0 0 0 0 0 0 2\n"),
+              "t.rad:2: ring \"r\": zero normal");
+    EXPECT_EQ(BuildError("void source s 0 0 4 0 0 0 1\n"), "t.rad:1: source \"s\": zero direction");
+    EXPECT_EQ(BuildError("void source s 0 0 4 0 0 1 0\n"), "t.rad:1: source \"s\": zero size");
+}
+
+TEST(BuildScene, CubeAsOconv) {
+    // radiance-notes.md §2.2: a 4×4×3 box gives origin (−1e-5, −1e-5, −0.50001), size 4.00002.
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                  "white polygon a 0 0 12 0 0 0 4 0 0 4 4 0 0 4 0\n"
+                                  "white polygon b 0 0 12 0 0 3 0 4 3 4 4 3 4 0 3\n"
+                                  "void glow sky 0 0 4 1 1 1 0\nsky source s 0 0 4 0 0 1 180\n");
+    EXPECT_NEAR(scene.cubeSize, 4.00002, 1e-12);
+    ExpectNear(scene.cubeOrigin, {-1e-5, -1e-5, -0.50001});
+
+    const Scene empty = BuildText("void glow sky 0 0 4 1 1 1 0\nsky source s 0 0 4 0 0 1 180\n");
+    EXPECT_EQ(empty.cubeSize, 1.0);
+    ExpectNear(empty.cubeOrigin, {-0.5, -0.5, -0.5});
+}
+
+TEST(SurfaceBounds, ExactForCurvedSurfaces) {
+    const Scene scene = BuildText(std::string(kPlastic) +
+                                  "white sphere s 0 0 4 1 2 3 2\n"
+                                  "white ring r 0 0 8 0 0 0 0 0 1 0 2\n"
+                                  "white cylinder c 0 0 7 0 0 0 0 0 4 1\n"
+                                  "void source d 0 0 4 0 0 1 1\n");
+    const Bounds3 sphere = SurfaceBounds(scene.surfaces[0]);
+    ExpectNear(sphere.lo, {-1, 0, 1});
+    ExpectNear(sphere.hi, {3, 4, 5});
+    const Bounds3 ring = SurfaceBounds(scene.surfaces[1]);
+    ExpectNear(ring.lo, {-2, -2, 0});
+    ExpectNear(ring.hi, {2, 2, 0});
+    const Bounds3 cylinder = SurfaceBounds(scene.surfaces[2]);
+    ExpectNear(cylinder.lo, {-1, -1, 0});
+    ExpectNear(cylinder.hi, {1, 1, 4});
+    EXPECT_TRUE(SurfaceBounds(scene.surfaces[3]).Empty());
+
+    // A tilted ring: every point of the circle lies inside its bounds.
+    const Scene tilted = BuildText(std::string(kPlastic) + "white ring t 0 0 8 1 1 1 1 1 1 0 1\n");
+    const auto& ring2 = std::get<Ring>(tilted.surfaces[0].shape);
+    const Bounds3 b = SurfaceBounds(tilted.surfaces[0]);
+    const Vec3 u = Perpendicular(ring2.normal), v = Cross(ring2.normal, u);
+    for (int i = 0; i < 360; ++i) {
+        const double a = i * kPi / 180;
+        const Vec3 p = ring2.center + (u * std::cos(a) + v * std::sin(a)) * ring2.r1;
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(p[k], b.lo[k] - 1e-12);
+            EXPECT_LE(p[k], b.hi[k] + 1e-12);
+        }
+    }
+}
+
+TEST(MaterialType, NamesAndClasses) {
+    EXPECT_STREQ(MaterialTypeName(MaterialType::Plastic), "plastic");
+    EXPECT_STREQ(MaterialTypeName(MaterialType::Interface), "interface");
+    EXPECT_STREQ(MaterialTypeName(MaterialType::Spotlight), "spotlight");
+    EXPECT_TRUE(IsTransparentType(MaterialType::Trans));
+    EXPECT_TRUE(IsTransparentType(MaterialType::Glass));
+    EXPECT_TRUE(IsTransparentType(MaterialType::Dielectric));
+    EXPECT_TRUE(IsTransparentType(MaterialType::Interface));
+    EXPECT_FALSE(IsTransparentType(MaterialType::Mirror));
+    EXPECT_FALSE(IsTransparentType(MaterialType::Plastic));
+    EXPECT_TRUE(IsLightType(MaterialType::Light));
+    EXPECT_TRUE(IsLightType(MaterialType::Illum));
+    EXPECT_TRUE(IsLightType(MaterialType::Glow));
+    EXPECT_TRUE(IsLightType(MaterialType::Spotlight));
+    EXPECT_FALSE(IsLightType(MaterialType::Mirror));
+}
+
+}  // namespace
+}  // namespace rt
