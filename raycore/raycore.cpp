@@ -1,1 +1,575 @@
-// placeholder: being written
+// SPDX-License-Identifier: MIT
+//
+// Embree 3 back end of RayCore. Embree traverses in single precision; the
+// exact answer comes from raycore/shapes.h in double. The two meet in
+// callbacks that receive a Query (our RTCIntersectContext extension) carrying
+// the caller's double ray and the best hit so far:
+//   - triangles (polygons): an intersection/occlusion filter recomputes t on
+//     the polygon's plane and accepts or rejects the candidate;
+//   - spheres, cones, rings: user geometry whose intersect callback runs the
+//     exact shape test directly.
+// Candidates with exact t <= kFtiny or t >= tmax are rejected, so traversal
+// simply continues past the surface a ray starts on.
+//
+// Embree's contracts relied on here:
+//   - The context pointer given to rtcIntersect1/rtcOccluded1 is handed back
+//     unchanged to filters and user callbacks (so the Query can extend it).
+//   - A filter sees ray.tfar set to the candidate's float distance; if it
+//     keeps the hit it may lower or raise tfar, and Embree culls later
+//     candidates against that value; if it rejects, tfar is restored.
+//   - Geometry must be committed before the scene, the scene before tracing;
+//     after rtcCommitScene the scene is read-only and safe to trace from any
+//     number of threads.
+//   - rtcAttachGeometry takes its own reference: we release ours at once, and
+//     the scene keeps the geometry alive until rtcReleaseScene.
+#include "raycore/raycore.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "core/check.h"
+#include "core/conventions.h"
+#include "raycore/shapes.h"
+
+namespace rt {
+
+std::ostream& operator<<(std::ostream& os, const Hit& hit) {
+    return os << "Hit{t=" << hit.t << ", point=" << hit.point << ", normal=" << hit.normal
+              << ", surface=" << hit.surface << "}";
+}
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Float error allowance of Embree's distances, relative to the size of the
+/// coordinates involved (~84 float ulps: covers rounding of the origin, the
+/// direction and the triangle test with room to spare).
+constexpr double kFloatSlack = 1e-5;
+
+/// What the coincidence rule needs to know about a surface's material.
+struct Priority {
+    int material = -1;         // -1: void
+    bool transparent = false;  // istransp() of the material
+};
+
+/// Plane of the polygon a triangle came from (exact t for the filter).
+struct TrianglePlane {
+    Vec3 normal;
+    double offset = 0;
+    int surface = -1;
+};
+
+float RoundDown(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+float RoundUp(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+double MaxAbs(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+/// First Embree error reported through the device callback. The callback may
+/// run on Embree's build threads, hence the mutex.
+struct EmbreeErrors {
+    std::mutex mutex;
+    RTCError code = RTC_ERROR_NONE;
+    std::string message;
+
+    static void Callback(void* userPtr, RTCError code, const char* str) {
+        auto* self = static_cast<EmbreeErrors*>(userPtr);
+        std::lock_guard lock(self->mutex);
+        if (self->code != RTC_ERROR_NONE) return;
+        self->code = code;
+        self->message = str ? str : "";
+    }
+};
+
+const char* ErrorName(RTCError code) {
+    switch (code) {
+        case RTC_ERROR_NONE:
+            return "no error";
+        case RTC_ERROR_UNKNOWN:
+            return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT:
+            return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION:
+            return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU:
+            return "unsupported CPU";
+        case RTC_ERROR_CANCELLED:
+            return "cancelled";
+    }
+    return "unknown error";
+}
+
+[[noreturn]] void ThrowEmbreeError(RTCError code, const std::string& message, const char* call) {
+    const auto kind = code == RTC_ERROR_OUT_OF_MEMORY ? Error::Kind::System : Error::Kind::Internal;
+    std::string text = std::string("Embree ") + call + ": " + ErrorName(code);
+    if (!message.empty()) text += " (" + message + ")";
+    throw Error(kind, text);
+}
+
+}  // namespace
+
+struct RayCore::Impl {
+    /// Per-kind user geometry: primID -> surface, and float bounds relative
+    /// to the scene centre, precomputed so the bounds callback only copies.
+    struct UserKind {
+        std::vector<int> surfaces;
+        std::vector<RTCBounds> bounds;
+    };
+
+    /// Our RTCIntersectContext extension; see the file comment. Lives on the
+    /// caller's stack for one query, so queries share no mutable state.
+    struct Query {
+        RTCIntersectContext rtc;  // must stay first: Embree returns &rtc to callbacks
+        const Impl* impl;
+        Vec3 org, dir;  // the caller's exact ray
+        double tmax;    // exclusive upper bound on exact t (kInf: none)
+        double shift;   // the float ray starts this far behind org
+        double slack;   // allowance for Embree's float error in t
+        // Best candidate so far (Intersect only).
+        double bestT = kInf;
+        int best = -1;
+        Vec3 bestNormal;
+
+        /// Radiance's rule for a new candidate: nearer by more than kFtiny
+        /// wins; within kFtiny, material beats void, opaque beats transparent,
+        /// the larger material index wins, and a tie keeps the lower surface
+        /// index (deterministic where Radiance keeps "the first found").
+        bool Offer(double t, int surface, const Vec3& normal) {
+            bool take;
+            if (best < 0 || t < bestT - kFtiny) {
+                take = true;
+            } else if (t > bestT + kFtiny) {
+                take = false;
+            } else if (surface == best) {
+                take = t < bestT;
+            } else {
+                take = impl->Beats(surface, best);
+            }
+            if (take) {
+                bestT = t;
+                best = surface;
+                bestNormal = normal;
+            }
+            return take;
+        }
+
+        /// Float tfar that still admits every candidate that could matter:
+        /// anything within kFtiny of the best, plus Embree's float error.
+        float FarBound() const { return RoundUp(bestT + kFtiny + shift + slack); }
+    };
+    static_assert(std::is_standard_layout_v<Query>, "Query must extend RTCIntersectContext");
+
+    const Scene* scene = nullptr;
+    Vec3 centre;                           // Embree coordinates are relative to this point
+    double extent = 1;                     // size of the geometry around the centre (scene units)
+    std::vector<Priority> priority;        // per surface
+    std::vector<TrianglePlane> triangles;  // per Embree triangle (primID)
+    UserKind spheres, cones, rings;
+
+    EmbreeErrors errors;
+    RTCDevice device = nullptr;
+    RTCScene rtcScene = nullptr;
+
+    ~Impl() {
+        if (rtcScene) rtcReleaseScene(rtcScene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    /// Throws the first error the callback recorded during `call`.
+    void Check(const char* call) {
+        std::lock_guard lock(errors.mutex);
+        if (errors.code != RTC_ERROR_NONE) ThrowEmbreeError(errors.code, errors.message, call);
+    }
+
+    bool Beats(int candidate, int incumbent) const {
+        const Priority& c = priority[static_cast<size_t>(candidate)];
+        const Priority& b = priority[static_cast<size_t>(incumbent)];
+        const bool cVoid = c.material < 0, bVoid = b.material < 0;
+        if (cVoid != bVoid) return !cVoid;
+        if (c.transparent != b.transparent) return !c.transparent;
+        if (c.material != b.material) return c.material > b.material;
+        return candidate < incumbent;
+    }
+
+    void Build(const Scene& s);
+    void BuildTriangles();
+    void BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,
+                       RTCOccludedFunctionN occluded);
+    Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax, RTCRay& ray) const;
+
+    /// How far a ray must be advanced before Embree sees it (0 near the
+    /// scene), or nullopt when it cannot reach the scene at all.
+    std::optional<double> DistanceToScene(const Vec3& org, const Vec3& dir) const;
+
+    static void TriangleIntersectFilter(const RTCFilterFunctionNArguments* args);
+    static void TriangleOccludedFilter(const RTCFilterFunctionNArguments* args);
+    static void UserBounds(const RTCBoundsFunctionArguments* args);
+    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+    static void UserIntersect(const RTCIntersectFunctionNArguments* args);
+    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+    static void UserOccluded(const RTCOccludedFunctionNArguments* args);
+
+    /// Exact t of triangle primID's polygon plane, if it is a valid candidate.
+    static std::optional<double> TriangleT(const Query& q, unsigned primID) {
+        const TrianglePlane& p = q.impl->triangles[primID];
+        const double denom = Dot(p.normal, q.dir);
+        if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_face.c
+        const double t = (p.offset - Dot(p.normal, q.org)) / denom;
+        if (!(t > kFtiny) || !(t < q.tmax)) return std::nullopt;
+        return t;
+    }
+};
+
+// ---------------------------------------------------------------------------
+// Callbacks. Only rtcIntersect1/rtcOccluded1 are used, so every callback sees
+// N == 1 and the ray/hit pointers are plain RTCRay/RTCHit/RTCRayHit.
+
+void RayCore::Impl::TriangleIntersectFilter(const RTCFilterFunctionNArguments* args) {
+    RT_DCHECK(args->N == 1);
+    auto& q = *reinterpret_cast<Query*>(args->context);
+    const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto t = TriangleT(q, hit->primID);
+    const TrianglePlane& plane = q.impl->triangles[hit->primID];
+    if (!t || !q.Offer(*t, plane.surface, plane.normal)) {
+        args->valid[0] = 0;  // Embree restores tfar and keeps traversing
+        return;
+    }
+    reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
+}
+
+void RayCore::Impl::TriangleOccludedFilter(const RTCFilterFunctionNArguments* args) {
+    RT_DCHECK(args->N == 1);
+    const auto& q = *reinterpret_cast<const Query*>(args->context);
+    const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
+    if (!TriangleT(q, hit->primID)) args->valid[0] = 0;
+}
+
+void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
+    const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
+    *args->bounds_o = kind->bounds[args->primID];
+}
+
+template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
+    RT_DCHECK(args->N == 1);
+    if (!args->valid[0]) return;
+    const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
+    auto& q = *reinterpret_cast<Query*>(args->context);
+    const int surface = kind->surfaces[args->primID];
+    const auto& shape =
+        std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
+    const auto h = Fn(shape, q.org, q.dir);
+    if (!h || !(h->t < q.tmax) || !q.Offer(h->t, surface, h->normal)) return;
+    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    rayhit->ray.tfar = q.FarBound();
+    rayhit->hit.Ng_x = static_cast<float>(h->normal.x);
+    rayhit->hit.Ng_y = static_cast<float>(h->normal.y);
+    rayhit->hit.Ng_z = static_cast<float>(h->normal.z);
+    rayhit->hit.u = rayhit->hit.v = 0;
+    rayhit->hit.primID = args->primID;
+    rayhit->hit.geomID = args->geomID;
+    rayhit->hit.instID[0] = args->context->instID[0];
+}
+
+template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
+    RT_DCHECK(args->N == 1);
+    if (!args->valid[0]) return;
+    const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
+    const auto& q = *reinterpret_cast<const Query*>(args->context);
+    const int surface = kind->surfaces[args->primID];
+    const auto& shape =
+        std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
+    const auto h = Fn(shape, q.org, q.dir);
+    if (h && h->t < q.tmax) {
+        // Embree's convention for "occluded": tfar = -inf.
+        reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Construction.
+
+void RayCore::Impl::Build(const Scene& s) {
+    scene = &s;
+    // Centre of the geometry: oconv's cube when the loader filled it in,
+    // otherwise (hand-built scenes) the bounds of the surfaces.
+    Bounds3 bounds;
+    for (const Surface& surface : s.surfaces) bounds.Extend(ShapeBounds(surface));
+    if (s.cubeSize > 0) {
+        centre = s.cubeOrigin + Vec3{1, 1, 1} * (s.cubeSize / 2);
+        extent = s.cubeSize;
+    } else if (!bounds.Empty()) {
+        centre = (bounds.lo + bounds.hi) / 2;
+        extent = MaxAbs(bounds.hi - bounds.lo);
+    }
+    if (!(extent > 0)) extent = 1;
+
+    priority.resize(s.surfaces.size());
+    for (size_t i = 0; i < s.surfaces.size(); ++i) {
+        const Surface& surface = s.surfaces[i];
+        Priority& p = priority[i];
+        p.material = surface.material;
+        if (p.material >= 0) {
+            RT_CHECK(static_cast<size_t>(p.material) < s.materials.size());
+            p.transparent = IsTransparentType(s.materials[static_cast<size_t>(p.material)].type);
+        }
+        const int index = static_cast<int>(i);
+        switch (surface.type) {
+            case SurfaceType::Polygon:
+                break;  // BuildTriangles
+            case SurfaceType::Sphere:
+            case SurfaceType::Bubble:
+                RT_CHECK(std::get<Sphere>(surface.shape).inward ==
+                         (surface.type == SurfaceType::Bubble));
+                spheres.surfaces.push_back(index);
+                break;
+            case SurfaceType::Cone:
+            case SurfaceType::Cup:
+            case SurfaceType::Cylinder:
+            case SurfaceType::Tube:
+                RT_CHECK(std::get<Cone>(surface.shape).inward ==
+                         (surface.type == SurfaceType::Cup || surface.type == SurfaceType::Tube));
+                cones.surfaces.push_back(index);
+                break;
+            case SurfaceType::Ring:
+                rings.surfaces.push_back(index);
+                break;
+            case SurfaceType::Source:
+                break;  // not geometry
+        }
+    }
+
+    device = rtcNewDevice(nullptr);
+    if (!device) ThrowEmbreeError(rtcGetDeviceError(nullptr), "", "rtcNewDevice");
+    rtcSetDeviceErrorFunction(device, &EmbreeErrors::Callback, &errors);
+    // Without filter support Embree would silently report self-intersections;
+    // with back-face culling it would lose the inside of closed rooms.
+    if (!rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) ||
+        rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_BACKFACE_CULLING_ENABLED)) {
+        throw Error(Error::Kind::Internal,
+                    "Embree build lacks filter functions or culls back faces");
+    }
+    rtcScene = rtcNewScene(device);
+    Check("rtcNewScene");
+    // ROBUST: watertight triangle tests, so rays through shared edges and
+    // vertices never slip between triangles.
+    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST);
+
+    BuildTriangles();
+    BuildUserKind(spheres, &UserIntersect<Sphere, IntersectSphere>,
+                  &UserOccluded<Sphere, IntersectSphere>);
+    BuildUserKind(cones, &UserIntersect<Cone, IntersectCone>, &UserOccluded<Cone, IntersectCone>);
+    BuildUserKind(rings, &UserIntersect<Ring, IntersectRing>, &UserOccluded<Ring, IntersectRing>);
+
+    rtcCommitScene(rtcScene);
+    Check("rtcCommitScene");
+}
+
+void RayCore::Impl::BuildTriangles() {
+    std::vector<float> vertices;
+    std::vector<unsigned> indices;
+    for (size_t i = 0; i < scene->surfaces.size(); ++i) {
+        const Surface& surface = scene->surfaces[i];
+        if (surface.type != SurfaceType::Polygon) continue;
+        const auto& polygon = std::get<Polygon>(surface.shape);
+        const auto base = static_cast<unsigned>(vertices.size() / 3);
+        // Same double -> same float: polygons sharing a vertex share it
+        // bit-exactly, which Embree's watertight test needs.
+        for (const Vec3& v : polygon.vertices) {
+            const Vec3 r = v - centre;
+            vertices.insert(vertices.end(), {static_cast<float>(r.x), static_cast<float>(r.y),
+                                             static_cast<float>(r.z)});
+        }
+        for (const auto& tri : TriangulatePolygon(polygon)) {
+            for (int k : tri) indices.push_back(base + static_cast<unsigned>(k));
+            triangles.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
+        }
+    }
+    if (triangles.empty()) return;
+
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    Check("rtcNewGeometry");
+    // Embree pads buffers it allocates itself (it reads 16 bytes per vertex).
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                           RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                           vertices.size() / 3));
+    auto* ib = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), triangles.size()));
+    if (!vb || !ib) {
+        rtcReleaseGeometry(geometry);
+        Check("rtcSetNewGeometryBuffer");
+        throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
+    }
+    std::copy(vertices.begin(), vertices.end(), vb);
+    std::copy(indices.begin(), indices.end(), ib);
+    rtcSetGeometryIntersectFilterFunction(geometry, &TriangleIntersectFilter);
+    rtcSetGeometryOccludedFilterFunction(geometry, &TriangleOccludedFilter);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(rtcScene, geometry);
+    rtcReleaseGeometry(geometry);
+    Check("triangle mesh");
+}
+
+void RayCore::Impl::BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,
+                                  RTCOccludedFunctionN occluded) {
+    if (kind.surfaces.empty()) return;
+    kind.bounds.reserve(kind.surfaces.size());
+    for (int surface : kind.surfaces) {
+        const Bounds3 b = ShapeBounds(scene->surfaces[static_cast<size_t>(surface)]);
+        const Vec3 lo = b.lo - centre, hi = b.hi - centre;
+        // Padding covers the float ray's deviation from the exact ray, so a
+        // grazing exact hit is still offered to the exact test.
+        const double pad = kFloatSlack * (std::max(MaxAbs(lo), MaxAbs(hi)) + MaxAbs(hi - lo));
+        RTCBounds rb;
+        rb.lower_x = RoundDown(lo.x - pad);
+        rb.lower_y = RoundDown(lo.y - pad);
+        rb.lower_z = RoundDown(lo.z - pad);
+        rb.upper_x = RoundUp(hi.x + pad);
+        rb.upper_y = RoundUp(hi.y + pad);
+        rb.upper_z = RoundUp(hi.z + pad);
+        rb.align0 = rb.align1 = 0;
+        kind.bounds.push_back(rb);
+    }
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    Check("rtcNewGeometry");
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(kind.surfaces.size()));
+    rtcSetGeometryUserData(geometry, &kind);
+    rtcSetGeometryBoundsFunction(geometry, &UserBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(rtcScene, geometry);
+    rtcReleaseGeometry(geometry);
+    Check("user geometry");
+}
+
+// ---------------------------------------------------------------------------
+// Queries.
+
+RayCore::Impl::Query RayCore::Impl::MakeQuery(const Vec3& org, const Vec3& dir, double tmax,
+                                              RTCRay& ray) const {
+    Query q;
+    rtcInitIntersectContext(&q.rtc);
+    q.impl = this;
+    q.org = org;
+    q.dir = dir;
+    q.tmax = tmax > 0 ? tmax : kInf;
+    // Embree's float distances are off by a few ulps of the largest
+    // coordinate in play. The float ray starts `shift` behind the origin so
+    // that every exact t > kFtiny has a float t > 0 (tnear = 0), and the
+    // exact test, not Embree, decides what is too close.
+    const Vec3 rel = org - centre;
+    q.slack = kFloatSlack * std::max(MaxAbs(rel), extent);
+    q.shift = q.slack;
+    const Vec3 start = rel - dir * q.shift;
+    ray.org_x = static_cast<float>(start.x);
+    ray.org_y = static_cast<float>(start.y);
+    ray.org_z = static_cast<float>(start.z);
+    ray.dir_x = static_cast<float>(dir.x);
+    ray.dir_y = static_cast<float>(dir.y);
+    ray.dir_z = static_cast<float>(dir.z);
+    ray.tnear = 0;
+    ray.tfar =
+        tmax > 0 ? RoundUp(tmax + q.shift + q.slack) : std::numeric_limits<float>::infinity();
+    ray.time = 0;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    return q;
+}
+
+RayCore::RayCore(const Scene& scene) : impl_(std::make_unique<Impl>()) { impl_->Build(scene); }
+
+RayCore::~RayCore() = default;
+
+std::optional<double> RayCore::Impl::DistanceToScene(const Vec3& org, const Vec3& dir) const {
+    if (!IsFinite(org) || !IsFinite(dir)) return std::nullopt;
+    const Vec3 rel = org - centre;
+    const double radius = extent;  // generous: the geometry lies within 0.87·extent
+    const double dist2 = LengthSquared(rel);
+    if (dist2 <= 16.0 * radius * radius) return 0.0;
+    // Closest approach from the perpendicular part (no b² - c cancellation).
+    const double b = Dot(rel, dir);
+    const double perp2 = LengthSquared(rel - dir * b);
+    if (perp2 > radius * radius || b > 0) return std::nullopt;  // misses the scene
+    const double entry = -b - std::sqrt(radius * radius - perp2);
+    // The advanced origin is only known to an ulp of the original distance:
+    // stop that far (and a scene radius) short of the scene.
+    const double margin = radius + 8.0 * std::sqrt(dist2) * std::numeric_limits<double>::epsilon();
+    const double advance = std::max(0.0, entry - margin);
+    // Beyond ~1e15 scene sizes the origin cannot be placed near the scene in
+    // double at all; such a ray cannot meaningfully hit anything.
+    if (MaxAbs(org + dir * advance - centre) > 1e15 * radius) return std::nullopt;
+    return advance;
+}
+
+std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const {
+    // A ray from far outside the scene is first advanced, in double, to near
+    // the scene: Embree's float rays lose precision with distance and must
+    // stay within about 1.8e19 of the origin.
+    const auto advance = impl_->DistanceToScene(orgIn, dir);
+    if (!advance) return std::nullopt;
+    if (tmaxIn > 0 && tmaxIn <= *advance) return std::nullopt;
+    const Vec3 org = orgIn + dir * *advance;
+    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
+    RTCRayHit rayhit;
+    Impl::Query q = impl_->MakeQuery(org, dir, tmax, rayhit.ray);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->rtcScene, &q.rtc, &rayhit);
+    // The answer is the Query's best, not rayhit.hit: the callbacks may have
+    // accepted later coincident candidates that lost the priority rule.
+    if (q.best < 0) return std::nullopt;
+    Hit hit;
+    hit.t = q.bestT + *advance;
+    hit.point = org + dir * q.bestT;
+    hit.normal = q.bestNormal;
+    hit.surface = q.best;
+    return hit;
+}
+
+std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const {
+    RT_CHECK(surface >= 0 && static_cast<size_t>(surface) < impl_->scene->surfaces.size());
+    const auto h = IntersectShape(impl_->scene->surfaces[static_cast<size_t>(surface)], org, dir);
+    if (!h) return std::nullopt;
+    Hit hit;
+    hit.t = h->t;
+    hit.point = org + dir * h->t;
+    hit.normal = h->normal;
+    hit.surface = surface;
+    return hit;
+}
+
+bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const {
+    const auto advance = impl_->DistanceToScene(orgIn, dir);
+    if (!advance) return false;
+    if (tmaxIn > 0 && tmaxIn <= *advance) return false;
+    const Vec3 org = orgIn + dir * *advance;
+    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
+    RTCRay ray;
+    Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
+    rtcOccluded1(impl_->rtcScene, &q.rtc, &ray);
+    return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace rt

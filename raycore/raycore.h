@@ -12,6 +12,7 @@
 //   if (auto hit = core.Intersect(org, dir, 0.0)) { ... hit->surface ... }
 #pragma once
 
+#include <iosfwd>
 #include <memory>
 #include <optional>
 
@@ -27,6 +28,9 @@ struct Hit {
                        // sphere, inward for a bubble, the polygon's normal, ...), not flipped
     int surface = -1;  // index into Scene::surfaces
 };
+
+/// For test failure messages.
+std::ostream& operator<<(std::ostream& os, const Hit& hit);
 
 class RayCore {
 public:
