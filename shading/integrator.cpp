@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+//
+// The ray tree: rayorigin() limits, raytrace(), rayshade(), raytrans(),
+// sourcehit() and the -I/-i irradiance modes (radiance-notes.md §1.9, §2.5).
+#include "shading/integrator.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace rt {
+namespace {
+
+constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay | kSpecularRay;
+
+/// -I: the measurement point is moved this far along the normal (Radiance's
+/// rtrace uses 1.1e-4 for the ray origin and a pretend hit 1e-5 back).
+constexpr double kImmediateOffset = 1.1e-4;
+constexpr double kImmediateHit = 1e-5;
+
+bool HasGlowSky(const Scene& scene) {
+    for (const Surface& s : scene.surfaces) {
+        if (s.material >= 0 && scene.materials[s.material].type == MaterialType::Glow) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+                       const AmbientOptions& ambient, WarningSink warn)
+    : scene_(scene),
+      core_(core),
+      shading_(shading),
+      ambient_(ambient),
+      warn_(std::move(warn)),
+      rng_(shading.seed) {
+    // Radiance's hidden "Lamb" material for -i/-I: reflectance π turns the
+    // reflected radiance into irradiance.
+    lambertian_.name = "Lamb";
+    lambertian_.type = MaterialType::Plastic;
+    lambertian_.args = {kPi, kPi, kPi, 0.0, 0.0};
+
+    // With indirect bounces, a glow sky lights the scene through ambient rays,
+    // so the absence of direct sources is not worth a warning (as Radiance).
+    const bool quiet = ambient.bounces > 0 && HasGlowSky(scene);
+    WarningSink sourceWarn = [this, quiet](const std::string& msg) {
+        if (quiet && msg == "no light sources found") return;
+        if (warn_) warn_(msg);
+    };
+    Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
+    sources_ = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
+}
+
+bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned type,
+                            const Rgb* coef) {
+    child.org = parent.rop;
+    child.parent = &parent;
+    child.rtype = type;
+    child.crtype = parent.crtype | type;
+    child.depth = parent.depth + 1;
+    child.rlvl = parent.rlvl + ((type & kReflectionTypes) ? 1 : 0);
+    child.rcoef = coef ? *coef : Rgb(1, 1, 1);
+    double w = coef ? std::fmin(1.0, Intens(*coef)) : 1.0;
+    child.rweight = parent.rweight * w;
+    if (type & kReflectionTypes) {
+        child.rmax = 0;
+        child.rsrc = type == kShadowRay ? parent.rsrc : -1;
+    } else {
+        child.rsrc = parent.rsrc;
+        child.rmax = parent.rmax > 0 ? parent.rmax - parent.rot : 0;
+    }
+    if (child.rweight <= 0) return false;
+    if (type == kShadowRay) return true;
+    const int lr = shading_.limits.reflections;
+    const double lw = shading_.limits.weight;
+    if (lr <= 0 && coef) {
+        if (lr < 0 && child.rlvl > -lr) return false;
+        if (child.rweight >= lw) return true;
+        // Russian roulette: survive with probability weight/lw, boosted.
+        if (rng_.Uniform() * lw > child.rweight) return false;
+        child.rcoef *= lw / child.rweight;
+        child.rweight = lw;
+        return true;
+    }
+    return child.rweight >= lw && child.rlvl <= std::abs(lr);
+}
+
+bool Integrator::HitDistantSource(TracedRay& ray) const {
+    int found = -1;
+    for (int i = 0; i < static_cast<int>(sources_.size()); ++i) {
+        const LightSource& src = sources_[i];
+        if (src.shape != LightSource::Shape::Distant) continue;
+        if (ray.rsrc >= 0 && ray.rsrc != i) continue;  // an aimed ray tests its own source only
+        if (2.0 * kPi * (1.0 - Dot(src.location, ray.dir)) > src.area) continue;
+        const Material& m = scene_.materials[src.material];
+        // A transparent illum is counted directly: ambient and specular rays
+        // must not see it again.
+        bool transparentIllum = m.type == MaterialType::Illum && m.alternate < 0;
+        if (!src.skip && !transparentIllum) {
+            found = i;
+            break;
+        }
+        if (transparentIllum && (ray.crtype & (kAmbientRay | kSpecularRay))) return false;
+        if (src.skip && found < 0) found = i;
+    }
+    if (found < 0) return false;
+    ray.surface = sources_[found].surface;
+    ray.hitDistant = true;
+    ray.rot = kFhuge;
+    ray.rop = ray.org;
+    ray.ron = -ray.dir;
+    ray.geometricNormal = ray.ron;
+    ray.rod = 1.0;
+    return true;
+}
+
+void Integrator::Trace(TracedRay& ray) {
+    ray.rcol = Rgb();
+    ray.mcol = Rgb();
+    if (auto hit = core_.Intersect(ray.org, ray.dir, ray.rmax)) {
+        ray.surface = hit->surface;
+        ray.rot = hit->t;
+        ray.rop = hit->point;
+        ray.ron = hit->normal;
+        ray.geometricNormal = hit->normal;
+        ray.rod = -Dot(ray.dir, hit->normal);
+        ray.rmt = ray.rxt = hit->t;
+        Shade(ray);
+    } else if (ray.rmax > 0) {
+        // -ld: nothing before the clipping distance; no distant-source test.
+        ray.rot = kFhuge;
+        ray.rop = ray.org + ray.dir * ray.rmax;
+    } else if (HitDistantSource(ray)) {
+        ShadeLight(ray, scene_.materials[scene_.surfaces[ray.surface].material]);
+    } else {
+        ray.rot = kFhuge;
+        ray.rop = ray.org;
+    }
+    Report(ray);
+}
+
+void Integrator::Shade(TracedRay& ray) {
+    const Surface& surface = scene_.surfaces[ray.surface];
+    if (surface.material < 0) return;  // void: nothing to shade, black
+    const Material& m = scene_.materials[surface.material];
+    // -i: the first opaque, non-emitting surface reached along primary and
+    // transmitted rays is measured as a Lambertian irradiance meter.
+    if (shading_.irradiance == IrradianceMode::AtHit &&
+        (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsTransparentType(m.type) &&
+        !IsLightType(m.type)) {
+        ray.lambertian = true;
+        ShadeNormal(ray, lambertian_);
+        return;
+    }
+    ShadeMaterial(ray, m);
+}
+
+void Integrator::PassThrough(TracedRay& ray) {
+    TracedRay child;
+    StartChild(child, ray, kTransRay, nullptr);  // always continues, whatever the limits
+    child.dir = ray.dir;
+    Trace(child);
+    ray.mcol = child.mcol;
+    ray.rcol = child.rcol;
+    ray.rmt = ray.rot + child.rmt;
+    ray.rxt = ray.rot + child.rxt;
+}
+
+Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& /*ray*/, const Vec3& /*normal*/) {
+    // No indirect calculation yet: every bounce ends in the ambient value
+    // (Radiance's behaviour at -ab 0, and at the last bounce).
+    return coefficient * ambient_.value;
+}
+
+void Integrator::FlipSurface(TracedRay& ray) const {
+    ray.ron = -ray.ron;
+    ray.rod = -ray.rod;
+}
+
+void Integrator::Report(const TracedRay& ray) {
+    if (!trace_) return;
+    if (ray.rtype == kShadowRay && !traceShadows_) return;
+    trace_(MakeResult(ray));
+}
+
+RayResult Integrator::MakeResult(const TracedRay& ray) const {
+    RayResult r;
+    r.origin = ray.org;
+    r.direction = ray.dir;
+    r.value = ray.rcol;
+    r.mirrored = ray.mcol;
+    r.mirrorLength = ray.rmt;
+    r.unmirroredLength = ray.rxt;
+    r.firstLength = ray.rot;
+    r.point = ray.rop;
+    r.weight = ray.rweight;
+    r.depth = ray.depth;
+    Rgb coef(1, 1, 1);
+    for (const TracedRay* p = &ray; p != nullptr; p = p->parent) coef *= p->rcoef;
+    r.coefficient = coef;
+    r.contribution = ray.rcol * coef;
+    if (ray.surface >= 0 && !ray.irradianceHit) {
+        const Surface& s = scene_.surfaces[ray.surface];
+        r.normal = ray.ron;
+        r.geometricNormal = ray.geometricNormal;
+        r.surfaceName = s.name;
+        r.modifierName = s.modifierName;
+        r.materialName = s.material >= 0 ? std::string_view(scene_.materials[s.material].name)
+                                         : std::string_view("void");
+    }
+    return r;
+}
+
+RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
+                                 std::uint64_t rayIndex) {
+    rng_.Seed(MixSeed(shading_.seed, rayIndex));
+    TracedRay ray;
+    ray.org = org;
+    ray.dir = dir;
+    ray.rmax = rmax;
+    if (shading_.irradiance == IrradianceMode::Immediate) {
+        // The input is a measurement point and the normal of the measuring
+        // plane: pretend a ray came down the normal and hit a Lambertian meter.
+        ray.org = org + dir * kImmediateOffset;
+        ray.dir = -dir;
+        ray.rmax = 0;
+        ray.rot = ray.rxt = ray.rmt = kImmediateHit;
+        ray.rop = ray.org + ray.dir * kImmediateHit;
+        ray.ron = dir;
+        ray.rod = 1.0;
+        ray.irradianceHit = true;
+        ray.lambertian = true;
+        ShadeNormal(ray, lambertian_);
+        Report(ray);
+        return MakeResult(ray);
+    }
+    Trace(ray);
+    return MakeResult(ray);
+}
+
+}  // namespace rt

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+//
+// Internal to shading/: Radiance's ray tree (raytrace.c) with its materials and
+// direct calculation. The Renderer in renderer.h is the public face; this
+// class holds the per-process state (source statistics, random numbers).
+//
+// Method bodies are split by topic: integrator.cpp (ray tree, rayorigin
+// limits, -I/-i), direct.cpp (direct(), source rays), materials.cpp
+// (normal.c, m_mirror.c, glass.c, dielectric.c, m_light).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "ambient/options.h"
+#include "core/conventions.h"
+#include "core/diagnostics.h"
+#include "core/random.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+#include "raycore/raycore.h"
+#include "scene/scene.h"
+#include "shading/light_sources.h"
+#include "shading/options.h"
+#include "shading/ray_result.h"
+
+namespace rt {
+
+/// Radiance's ray type bits (ray.h); a ray's `crtype` ORs them along its path.
+enum RayTypeBits : unsigned {
+    kPrimaryRay = 1,
+    kShadowRay = 2,
+    kReflectedRay = 4,
+    kRefractedRay = 8,
+    kTransRay = 16,
+    kAmbientRay = 32,
+    kSpecularRay = 64,
+};
+
+/// One ray of the ray tree (Radiance's RAY, the fields lazyrad uses).
+struct TracedRay {
+    // Set before tracing.
+    Vec3 org;
+    Vec3 dir;                  // unit
+    double rmax = 0;           // > 0 limits the distance
+    unsigned rtype = kPrimaryRay;
+    unsigned crtype = kPrimaryRay;
+    int rlvl = 0;              // reflection level
+    double rweight = 1;        // importance
+    Rgb rcoef{1, 1, 1};        // coefficient this ray's value will be multiplied by
+    const TracedRay* parent = nullptr;
+    int rsrc = -1;             // light source this shadow ray aims at, -1 for none
+    int depth = 0;             // ray-tree depth for trace output
+
+    // Filled by tracing.
+    int surface = -1;          // hit surface (index into Scene::surfaces) or -1
+    bool hitDistant = false;   // hit a distant source (surface is then that source)
+    double rot = kFhuge;       // first intersection distance
+    Vec3 rop;                  // intersection point
+    Vec3 ron;                  // normal at rop, flipped by materials toward the ray
+    Vec3 geometricNormal;      // unflipped normal as the surface defines it
+    double rod = 0;            // -Dot(dir, ron): > 0 on the front
+    Rgb pcol{1, 1, 1};         // pattern colour (always 1: no patterns yet)
+    bool irradianceHit = false;  // -I pretend hit (no object)
+    bool lambertian = false;   // -i/-I: shade with Radiance's hidden Lamb material
+
+    // Results.
+    Rgb rcol;                  // radiance
+    Rgb mcol;                  // mirrored part
+    double rmt = kFhuge;       // mirror distance
+    double rxt = kFhuge;       // unmirrored distance
+
+    double EffectiveDistance() const {
+        return Bright(mcol) > 0.5 * Bright(rcol) ? rmt : rxt;
+    }
+};
+
+class Integrator {
+public:
+    Integrator(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+               const AmbientOptions& ambient, WarningSink warn);
+
+    RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax, std::uint64_t rayIndex);
+
+    void SetTraceCallback(std::function<void(const RayResult&)> callback, bool shadowRays) {
+        trace_ = std::move(callback);
+        traceShadows_ = shadowRays;
+    }
+
+    const std::vector<LightSource>& sources() const { return sources_; }
+
+private:
+    // integrator.cpp
+    /// Radiance's rayorigin(): sets up `child` from `parent`; false if the ray
+    /// must not be traced (weight limits, Russian roulette). `coef` may be null.
+    bool StartChild(TracedRay& child, const TracedRay& parent, unsigned type, const Rgb* coef);
+    /// Traces and shades `ray` (raytrace()): closest hit, distant sources, trace callback.
+    void Trace(TracedRay& ray);
+    /// Shades a ray that hit `ray.surface` (rayshade()); with -i, Lamb replaces materials.
+    void Shade(TracedRay& ray);
+    /// Pass-through (raytrans()): continues the ray unchanged past the surface.
+    void PassThrough(TracedRay& ray);
+    /// Looks for a distant source in the ray's direction (sourcehit()).
+    bool HitDistantSource(TracedRay& ray) const;
+    /// The indirect term A ⊗ E/π at a shaded point (multambient()); with no ambient
+    /// bounces this is the -av value.
+    Rgb Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3& normal);
+    void Report(const TracedRay& ray);
+    RayResult MakeResult(const TracedRay& ray) const;
+
+    // direct.cpp
+    /// Radiance's direct(): adds to ray.rcol the contribution of every light
+    /// source sample, `coef(ldir, omega)` giving the material's coefficient.
+    void Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, double)>& coef);
+    /// Radiance's srcvalue(): radiance arriving along a source ray aimed at `source`.
+    Rgb SourceValue(TracedRay& sray, int source);
+    /// Shades a shadow ray past an intervening surface (raycont()).
+    void ContinueShadowRay(TracedRay& sray);
+
+    // materials.cpp
+    void ShadeNormal(TracedRay& ray, const Material& m);     // plastic, metal, trans
+    void ShadeLight(TracedRay& ray, const Material& m);      // light, illum, glow, spotlight
+    void ShadeMirror(TracedRay& ray, const Material& m);
+    void ShadeGlass(TracedRay& ray, const Material& m);
+    void ShadeDielectric(TracedRay& ray, const Material& m); // dielectric, interface
+    void ShadeMaterial(TracedRay& ray, const Material& m);   // dispatch on type
+    void FlipSurface(TracedRay& ray) const;
+
+    const Scene& scene_;
+    const RayCore& core_;
+    ShadingOptions shading_;
+    AmbientOptions ambient_;
+    WarningSink warn_;
+    std::vector<LightSource> sources_;
+    Material lambertian_;   // -i/-I: plastic with reflectance pi
+    Rng rng_;
+    std::function<void(const RayResult&)> trace_;
+    bool traceShadows_ = false;
+};
+
+}  // namespace rt

@@ -1,0 +1,393 @@
+// SPDX-License-Identifier: MIT
+#include "shading/light_sources.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/conventions.h"
+#include "core/error.h"
+
+namespace rt {
+namespace {
+
+// Partitions are addressed in units where the whole source spans
+// [-kMaxParts, kMaxParts] along each size vector (Radiance's MAXSPART).
+constexpr int kMaxParts = 64;
+
+struct Partition {
+    int center[3];
+    int size[3];
+};
+
+/// getperpendicular() with Radiance's optional randomisation: a random start
+/// vector and axis order when `randomize`, else the fixed z, y, x scan.
+Vec3 PerpendicularTo(const Vec3& n, bool randomize, Rng& rng) {
+    if (!randomize) return Perpendicular(n);
+    Vec3 v(0.5 - rng.Uniform(), 0.5 - rng.Uniform(), 0.5 - rng.Uniform());
+    static constexpr int kOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                          {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    const int* ord = kOrders[static_cast<int>(6 * rng.Uniform()) % 6];
+    for (int i = 2; i >= 0; --i) {
+        if (std::fabs(n[ord[i]]) < 0.6) {
+            v[ord[i]] = 1.0;
+            break;
+        }
+    }
+    return Normalize(Cross(v, n));
+}
+
+/// Radiance's setflatss(): a square of the source's area, oriented by a
+/// perpendicular of the normal.
+void SetFlatSize(LightSource& src, bool randomFrames, Rng& rng) {
+    src.size[0] = PerpendicularTo(src.normal, randomFrames, rng) * (0.5 * std::sqrt(src.area));
+    src.size[1] = Cross(src.normal, src.size[0]);
+    src.size[2] = Vec3();
+}
+
+/// Crossing-number test for a point in the polygon's plane (edges inside).
+bool PointInPolygon(const Polygon& poly, const Vec3& p) {
+    // Project by dropping the largest normal component.
+    Vec3 an = Abs(poly.normal);
+    int drop = an.x > an.y ? (an.x > an.z ? 0 : 2) : (an.y > an.z ? 1 : 2);
+    int ax = drop == 0 ? 1 : 0, ay = drop == 2 ? 1 : 2;
+    bool inside = false;
+    size_t n = poly.vertices.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {
+        const Vec3& a = poly.vertices[i];
+        const Vec3& b = poly.vertices[j];
+        if ((a[ay] > p[ay]) != (b[ay] > p[ay])) {
+            double x = a[ax] + (p[ay] - a[ay]) * (b[ax] - a[ax]) / (b[ay] - a[ay]);
+            if (p[ax] < x) inside = !inside;
+        }
+    }
+    return inside;
+}
+
+[[noreturn]] void SourceError(const Surface& s, const std::string& what) {
+    ThrowUserError(s.loc, what + " for light source \"" + s.name + "\"");
+}
+
+void SetUpPolygon(LightSource& src, const Surface& s, bool randomFrames, Rng& rng) {
+    const auto& poly = std::get<Polygon>(s.shape);
+    if (poly.area <= 0) SourceError(s, "zero source area");
+    Vec3 c;
+    for (const Vec3& v : poly.vertices) c += v;
+    c = c / static_cast<double>(poly.vertices.size());
+    if (!PointInPolygon(poly, c)) SourceError(s, "cannot hit source center");
+    src.shape = LightSource::Shape::Flat;
+    src.location = c;
+    src.normal = poly.normal;
+    src.area = poly.area;
+    double r2 = 0;
+    for (const Vec3& v : poly.vertices) r2 = std::fmax(r2, LengthSquared(v - c));
+    src.radius = std::sqrt(r2);
+    if (poly.vertices.size() == 4) {  // parallelogram: sample along its own sides
+        src.size[0] = (poly.vertices[1] - poly.vertices[0]) * 0.5;
+        src.size[1] = (poly.vertices[3] - poly.vertices[0]) * 0.5;
+        src.size[2] = Vec3();
+    } else {
+        SetFlatSize(src, randomFrames, rng);
+    }
+}
+
+void SetUpRing(LightSource& src, const Surface& s, bool randomFrames, Rng& rng) {
+    const auto& ring = std::get<Ring>(s.shape);
+    if (ring.r1 <= kFtiny) SourceError(s, "illegal source radius");
+    if (ring.r0 > 0) SourceError(s, "cannot hit source center");
+    src.shape = LightSource::Shape::Flat;
+    src.circular = true;
+    src.location = ring.center;
+    src.normal = ring.normal;
+    src.radius = ring.r1;
+    src.area = kPi * ring.r1 * ring.r1;
+    SetFlatSize(src, randomFrames, rng);
+}
+
+void SetUpSphere(LightSource& src, const Surface& s) {
+    const auto& sphere = std::get<Sphere>(s.shape);
+    if (sphere.radius <= kFtiny) SourceError(s, "illegal source radius");
+    src.shape = LightSource::Shape::Sphere;
+    src.circular = true;
+    src.location = sphere.center;
+    src.radius = sphere.radius;
+    src.area = kPi * sphere.radius * sphere.radius;
+    // 0.7236 r: the half-size of the cube whose sample points best cover a ball.
+    src.size[0] = Vec3(0.7236 * sphere.radius, 0, 0);
+    src.size[1] = Vec3(0, 0.7236 * sphere.radius, 0);
+    src.size[2] = Vec3(0, 0, 0.7236 * sphere.radius);
+}
+
+void SetUpCylinder(LightSource& src, const Surface& s, const WarningSink& warn,
+                   bool randomFrames, Rng& rng) {
+    const auto& cyl = std::get<Cone>(s.shape);
+    Vec3 axis = cyl.p1 - cyl.p0;
+    double length = Length(axis);
+    axis = axis / length;
+    if (cyl.r0 <= kFtiny) SourceError(s, "illegal source radius");
+    if (cyl.r0 > 0.2 * length && warn) {
+        warn(s.loc.ToString() + ": source aspect too small for \"" + s.name + "\"");
+    }
+    src.shape = LightSource::Shape::Cylinder;
+    src.location = (cyl.p0 + cyl.p1) * 0.5;
+    src.radius = 0.5 * length;
+    src.area = 2.0 * cyl.r0 * length;
+    src.size[0] = axis * (0.5 * length);
+    src.size[2] = PerpendicularTo(axis, randomFrames, rng) * (0.8559 * cyl.r0);
+    src.size[1] = Cross(src.size[2], axis);
+}
+
+void SetUpDistant(LightSource& src, const Surface& s, bool randomFrames, Rng& rng) {
+    const auto& d = std::get<DistantSource>(s.shape);
+    double theta = kPi / 180.0 / 2.0 * d.angleDegrees;
+    if (theta <= kFtiny) SourceError(s, "zero size");
+    src.shape = LightSource::Shape::Distant;
+    src.circular = true;
+    src.location = d.direction;
+    src.normal = d.direction;
+    src.area = 2.0 * kPi * (1.0 - std::cos(theta));
+    src.radius = std::sqrt(src.area / kPi);
+    SetFlatSize(src, randomFrames, rng);
+}
+
+/// Radiance's flt_partit(): bisect along the longer (relative) side until the
+/// cell looks small from `point`, emitting leaves in lower-then-upper order.
+void PartitionFlat(const Vec3& point, int budget, const Vec3& centre, const Vec3& u,
+                   const Vec3& v, double du2, double dv2, Partition cell,
+                   std::vector<Partition>& out) {
+    double d2 = LengthSquared(point - centre);
+    if (budget < 2 || (d2 >= du2 && d2 >= dv2)) {
+        out.push_back(cell);
+        return;
+    }
+    int axis = du2 > dv2 ? 0 : 1;
+    Vec3 half = (axis == 0 ? u : v) * 0.5;
+    Vec3 nu = axis == 0 ? half : u;
+    Vec3 nv = axis == 1 ? half : v;
+    double ndu2 = axis == 0 ? du2 * 0.25 : du2;
+    double ndv2 = axis == 1 ? dv2 * 0.25 : dv2;
+    cell.size[axis] /= 2;
+    Partition lower = cell, upper = cell;
+    lower.center[axis] -= cell.size[axis];
+    upper.center[axis] += cell.size[axis];
+    PartitionFlat(point, budget / 2, centre - half, nu, nv, ndu2, ndv2, lower, out);
+    PartitionFlat(point, budget / 2, centre + half, nu, nv, ndu2, ndv2, upper, out);
+}
+
+/// Radiance's cyl_partit(): slices along the axis.
+void PartitionCylinder(const Vec3& point, int budget, const Vec3& centre, const Vec3& axis,
+                       double d2, Partition cell, std::vector<Partition>& out) {
+    if (budget < 2 || LengthSquared(point - centre) >= d2) {
+        out.push_back(cell);
+        return;
+    }
+    Vec3 half = axis * 0.5;
+    cell.size[0] /= 2;
+    Partition lower = cell, upper = cell;
+    lower.center[0] -= cell.size[0];
+    upper.center[0] += cell.size[0];
+    PartitionCylinder(point, budget / 2, centre - half, half, d2 * 0.25, lower, out);
+    PartitionCylinder(point, budget / 2, centre + half, half, d2 * 0.25, upper, out);
+}
+
+/// The partitions of one source seen from `point` (flatpart, cylpart, nopart).
+void PartitionSource(const LightSource& src, const Vec3& point, double rayWeight,
+                     double ratio, std::vector<Partition>& out) {
+    const Partition whole{{0, 0, 0}, {kMaxParts, kMaxParts, kMaxParts}};
+    if (ratio <= kFtiny) {
+        out.push_back(whole);
+        return;
+    }
+    switch (src.shape) {
+        case LightSource::Shape::Sphere:
+        case LightSource::Shape::Distant:
+            out.push_back(whole);
+            return;
+        case LightSource::Shape::Flat: {
+            if (Dot(point - src.location, src.normal) <= 0) return;  // behind the source
+            double k = 2.0 * rayWeight / ratio;
+            k *= k;
+            PartitionFlat(point, kMaxParts, src.location, src.size[0], src.size[1],
+                          k * LengthSquared(src.size[0]), k * LengthSquared(src.size[1]), whole,
+                          out);
+            return;
+        }
+        case LightSource::Shape::Cylinder: {
+            Vec3 v = point - src.location;
+            double axial2 = LengthSquared(src.size[0]);
+            double along = Dot(v, src.size[0]);
+            double centre2 = LengthSquared(v);
+            double radial2 = centre2 - along * along / axial2;
+            double rad2 = 1.365 * LengthSquared(src.size[1]);
+            if (radial2 <= rad2) return;  // inside the extended cylinder
+            double safe2 = axial2 * 4.0 * rayWeight * rayWeight / (ratio * ratio);
+            if (radial2 <= 4.0 * rad2 || centre2 >= safe2) {
+                out.push_back(whole);
+                return;
+            }
+            PartitionCylinder(point, kMaxParts, src.location, src.size[0], safe2, whole, out);
+            return;
+        }
+    }
+}
+
+/// Radiance's spotout(): true if the sample direction lies outside the spot.
+bool OutsideSpot(const LightSource& src, const Vec3& org, const Vec3& dir) {
+    if (src.shape == LightSource::Shape::Distant) {
+        // A distant spotlight is a beam: check the ray origin's distance from its axis.
+        Vec3 vd = src.spotAim - org;
+        double d = Dot(dir, vd);
+        d = LengthSquared(vd) - d * d;
+        return kPi * d > src.spotSolidAngle;
+    }
+    return src.spotSolidAngle < 2.0 * kPi * (1.0 + Dot(src.spotAim, dir));
+}
+
+}  // namespace
+
+std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink& warn,
+                                          bool randomFrames, Rng& rng) {
+    std::vector<LightSource> sources;
+    bool found = false;
+    for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
+        const Surface& s = scene.surfaces[i];
+        if (s.material < 0) continue;
+        const Material& m = scene.materials[s.material];
+        if (!IsLightType(m.type)) continue;
+        if (m.type == MaterialType::Glow && s.type != SurfaceType::Source && m.args[3] <= kFtiny) {
+            continue;  // a glow without radius only shows through indirect rays
+        }
+        if (m.args[0] <= kFtiny && m.args[1] <= kFtiny && m.args[2] <= kFtiny) continue;
+
+        LightSource src;
+        src.surface = i;
+        src.material = s.material;
+        switch (s.type) {
+            case SurfaceType::Polygon: SetUpPolygon(src, s, randomFrames, rng); break;
+            case SurfaceType::Ring: SetUpRing(src, s, randomFrames, rng); break;
+            case SurfaceType::Sphere: SetUpSphere(src, s); break;
+            case SurfaceType::Cylinder: SetUpCylinder(src, s, warn, randomFrames, rng); break;
+            case SurfaceType::Source: SetUpDistant(src, s, randomFrames, rng); break;
+            default:
+                ThrowUserError(s.loc, "illegal material \"" + m.name + "\" for " +
+                                          "surface \"" + s.name + "\" (light sources must be " +
+                                          "polygon, sphere, ring, cylinder or source)");
+        }
+        if (m.type == MaterialType::Glow) {
+            src.proximity = true;
+            src.proximityRadius = m.args[3];
+            if (src.shape == LightSource::Shape::Distant) src.skip = true;
+        } else if (m.type == MaterialType::Spotlight) {
+            double angle = m.args[3];
+            if (angle <= kFtiny) ThrowUserError(m.loc, "zero angle for spotlight \"" + m.name + "\"");
+            src.spot = true;
+            src.spotSolidAngle = 2.0 * kPi * (1.0 - std::cos(kPi / 180.0 / 2.0 * angle));
+            Vec3 aim(m.args[4], m.args[5], m.args[6]);
+            src.spotFocal = Length(aim);
+            if (src.spotFocal == 0) {
+                ThrowUserError(m.loc, "zero focus vector for spotlight \"" + m.name + "\"");
+            }
+            src.spotAim = aim / src.spotFocal;
+            if (src.shape == LightSource::Shape::Flat) {
+                // checkspot(): the cone must reach in front of the surface.
+                double d = Dot(src.spotAim, src.normal);
+                double d1 = 1.0 - src.spotSolidAngle / (2.0 * kPi);
+                if (!(d > kFtiny || 1.0 - kFtiny - d * d < d1 * d1)) {
+                    if (warn) warn(s.loc.ToString() + ": invalid spotlight direction for \"" +
+                                   s.name + "\"");
+                    src.skip = true;
+                }
+            }
+        }
+        if (!src.skip) found = true;
+        sources.push_back(src);
+    }
+    if (!found && warn) warn("no light sources found");
+    return sources;
+}
+
+void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& point,
+                          double rayWeight, const DirectOptions& options, Rng& rng,
+                          std::vector<SourceSample>& out) {
+    std::vector<Partition> parts;
+    parts.reserve(kMaxParts);
+    for (int sn = 0; sn < static_cast<int>(sources.size()); ++sn) {
+        const LightSource& src = sources[sn];
+        if (src.skip) continue;
+        parts.clear();
+        PartitionSource(src, point, rayWeight, options.sampling, parts);
+        const bool flat = src.shape == LightSource::Shape::Flat;
+        const bool distant = src.shape == LightSource::Shape::Distant;
+        for (const Partition& part : parts) {
+            double vpos[3] = {0, 0, 0};
+            if (options.jitter > kFtiny) {
+                // Radiance draws these from its stratified urand() table; plain
+                // uniform numbers have the same distribution.
+                for (int i = 0; i < 3; ++i) {
+                    double x = (flat && i == 2) ? 0.5 : rng.Uniform();
+                    vpos[i] = options.jitter * (1.0 - 2.0 * x) * part.size[i] / kMaxParts;
+                }
+            }
+            for (int i = 0; i < 3; ++i) vpos[i] += static_cast<double>(part.center[i]) / kMaxParts;
+            if (src.circular && (parts.size() > 1 || options.jitter > 0.7)) {
+                // Squeeze the square's samples into the disc (or the cube's into
+                // the ball) so they do not miss a round source.
+                double trim[3];
+                if (flat || distant) {
+                    double d = 1.12837917;  // sqrt(4/π): undoes setflatss()'s square
+                    trim[0] = d * std::sqrt(1.0 - 0.5 * vpos[1] * vpos[1]);
+                    trim[1] = d * std::sqrt(1.0 - 0.5 * vpos[0] * vpos[0]);
+                    trim[2] = 0.0;
+                } else {
+                    double sum = 0, big = 0;
+                    for (double x : vpos) {
+                        sum += x * x;
+                        big = std::fmax(big, x * x);
+                    }
+                    double t = sum > kFtiny * kFtiny ? (1.0 / 0.7236) * std::sqrt(big / sum) : 0.0;
+                    trim[0] = trim[1] = trim[2] = t;
+                }
+                for (int i = 0; i < 3; ++i) vpos[i] *= trim[i];
+            }
+            Vec3 dir = src.location + src.size[0] * vpos[0] + src.size[1] * vpos[1] +
+                       src.size[2] * vpos[2];
+            if (!distant) dir -= point;
+            double d = Length(dir);
+            if (d == 0) continue;  // at the source
+            dir = dir / d;
+
+            double omega;
+            if (flat) {
+                omega = -Dot(dir, src.normal) * part.size[0] * part.size[1] /
+                        (double(kMaxParts) * kMaxParts);
+            } else if (src.shape == LightSource::Shape::Cylinder) {
+                double c = Dot(dir, src.size[0]);
+                c *= c / LengthSquared(src.size[0]);
+                omega = std::sqrt(std::fmax(0.0, 1.0 - c)) * part.size[0] / double(kMaxParts);
+            } else {
+                omega = double(part.size[0]) * part.size[1] * part.size[2] /
+                        (double(kMaxParts) * kMaxParts * kMaxParts);
+            }
+            SourceSample sample;
+            sample.source = sn;
+            sample.dir = dir;
+            if (distant) {
+                sample.omega = omega * src.area;
+                sample.distance = kFhuge;
+                if (src.spot && OutsideSpot(src, point, dir)) continue;
+            } else {
+                if (omega <= 1e-4) continue;  // behind the source or grazing
+                sample.omega = omega * src.area / (d * d);
+                sample.distance = d;
+                if (src.proximity && d > src.proximityRadius) continue;
+                if (src.spot) {
+                    if (OutsideSpot(src, point, dir)) continue;
+                    double df = d + src.spotFocal;
+                    sample.omega *= d * d / (df * df);
+                }
+            }
+            out.push_back(sample);
+        }
+    }
+}
+
+}  // namespace rt
