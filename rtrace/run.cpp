@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: MIT
+#include "rtrace/run.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+#include "rtrace/output.h"
+#include "rtrace/ray_input.h"
+
+namespace rt {
+namespace {
+
+std::string ProgramName(std::span<const std::string> args) {
+    if (args.empty()) return "rtrace";
+    const std::string& a = args[0];
+    std::size_t slash = a.find_last_of('/');
+    return slash == std::string::npos ? a : a.substr(slash + 1);
+}
+
+/// Radiance's error() layout: "<prog>: <kind> - <text>". The bad-ray message
+/// is lazyrad's own and reads "<prog>: bad ray at ..." (see ray_input.h).
+void ReportError(std::ostream& msg, const std::string& prog, const Error& e) {
+    if (dynamic_cast<const BadRayError*>(&e)) {
+        msg << prog << ": " << e.what() << '\n';
+    } else {
+        const char* kind = e.kind() == Error::Kind::User     ? "fatal - "
+                           : e.kind() == Error::Kind::System ? "system - "
+                                                             : "internal - ";
+        msg << prog << ": " << kind << e.what() << '\n';
+    }
+    msg.flush();
+}
+
+/// Warnings about options that are accepted but do nothing yet, where a user
+/// would otherwise believe they had an effect.
+void WarnUnimplemented(const RtraceOptions& o, const WarningSink& warn) {
+    if (o.processes > 1)
+        warn("multiprocessing (-n " + std::to_string(o.processes) +
+             ") not implemented yet, using one process");
+    if (!o.persistFile.empty())
+        warn("persistent mode (-P/-PP) not implemented, processing input once");
+    if (!o.photonMaps.empty()) warn("photon mapping (-ap) not implemented, option ignored");
+    const MediumOptions& m = o.shading.medium;
+    if (m.extinction != Rgb() || m.albedo != Rgb() || m.eccentricity != 0 || m.samplingDistance != 0)
+        warn("participating medium (-me/-ma/-mg/-ms) not implemented, options ignored");
+}
+
+/// The record Radiance's bogusray() prints for a flush request: the previous
+/// ray re-initialised as an untraced primary ray (value 0, no object, length
+/// FHUGE, point at its origin).
+RayResult BogusRecord(const Vec3& origin, const Vec3& direction) {
+    RayResult r;
+    r.origin = origin;
+    r.direction = direction;
+    r.point = origin;
+    r.coefficient = Rgb(1, 1, 1);
+    return r;
+}
+
+bool TraceListAccepts(const RtraceOptions& o, const RayResult& r) {
+    if (!o.traceListSet) return true;
+    // No object: Radiance's ourtrace() prints it only for an exclude list.
+    if (r.modifierName == "*") return !o.traceListIsInclude;
+    bool listed = false;
+    for (const std::string& m : o.traceModifiers)
+        if (m == r.modifierName) listed = true;
+    return listed == o.traceListIsInclude;
+}
+
+}  // namespace
+
+int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
+        std::ostream& err, const RunEnvironment& env) {
+    std::string prog = ProgramName(args);
+    std::ostream* msg = &err;
+    std::ofstream errorFile;
+    bool warningsOn = true;
+    WarningSink warn = [&](const std::string& text) {
+        if (warningsOn) {
+            *msg << prog << ": warning - " << text << '\n';
+            msg->flush();
+        }
+    };
+
+    CommandLine cl;
+    std::vector<std::string> parseWarnings;
+    try {
+        cl = ParseCommandLine(args, [&](const std::string& w) { parseWarnings.push_back(w); });
+    } catch (const Error& e) {
+        for (const auto& w : parseWarnings) warn(w);
+        ReportError(err, prog, e);
+        return e.ExitCode();
+    }
+    RtraceOptions& opt = cl.options;
+    prog = cl.args[0];
+    warningsOn = opt.warnings;
+    for (const auto& w : parseWarnings) warn(w);
+
+    if (cl.action == CommandLine::Action::PrintVersion) {
+        out << kVersionString << '\n';
+        out.flush();
+        return 0;
+    }
+    if (cl.action == CommandLine::Action::PrintDefaults) {
+        out << FormatDefaults(opt);
+        out.flush();
+        return 0;
+    }
+
+    if (!opt.errorFile.empty()) {
+        errorFile.open(opt.errorFile, std::ios::app);
+        if (!errorFile) return 2;  // Radiance quits 2 without a message here
+        char pid[32];
+        std::snprintf(pid, sizeof pid, "%5d", env.pid);
+        errorFile << "**************\n*** PID " << pid << ": " << FormatArgs(cl.args) << '\n';
+        errorFile.flush();
+        msg = &errorFile;
+    }
+
+    RecordWriter writer(opt.outputFormat, out);
+    std::uint64_t index = 0;
+    try {
+        WarnUnimplemented(opt, warn);
+        const std::time_t now = env.clock();
+        // -u+: a new random sequence each run, as Radiance's srandom(time(0));
+        // -u-: repeatable.
+        opt.shading.seed = opt.shading.uncorrelated ? static_cast<unsigned long long>(now) : 0;
+
+        const OutputSpec spec = ParseOutputSpec(opt, warn);
+        if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");
+        std::unique_ptr<RayEvaluator> evaluator = env.makeEvaluator(cl.sceneFiles, opt, warn);
+
+        if (opt.header) {
+            std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);
+            writer.WriteText(FormatHeader(commandLine, spec, opt.outputFormat, now));
+        }
+        if (spec.trace) {
+            evaluator->SetTraceCallback(
+                [&](const RayResult& r) {
+                    if (TraceListAccepts(opt, r)) writer.WriteTraceRecord(spec.traceFields, r);
+                },
+                spec.traceShadows);
+        }
+
+        const int x = opt.xResolution, y = opt.yResolution;
+        // rtrace.c: -x with -y counts pixels, -y alone counts records; 0 = all input.
+        std::uint64_t remaining = x > 1 ? static_cast<std::uint64_t>(x) * static_cast<std::uint64_t>(y)
+                                        : static_cast<std::uint64_t>(std::max(y, 0));
+        const bool counting = remaining > 0;
+        // Periodic flush every x records unless this is a picture (x and y given).
+        const long flushInterval = (y > 0 && x > 1) ? 0 : x;
+        long nextFlush = flushInterval;
+        if (x > 0) {
+            if (y > 0) writer.WriteText(FormatResolution(x, y));
+            writer.Flush();
+        }
+
+        RayReader reader(in, opt.inputFormat);
+        Vec3 lastOrigin, lastDirection;
+        const bool immediate = opt.immediateIrradiance;
+        while (auto ray = reader.Next()) {
+            // hypot: no overflow for components beyond 1e154, unlike sqrt(dot).
+            const Vec3& d = ray->direction;
+            const double length = std::hypot(d.x, d.y, d.z);
+            if (length == 0) {
+                // A flush request: always answered with a record, then the
+                // output is flushed and the -x countdown starts again.
+                writer.WriteRecord(spec.fields, BogusRecord(lastOrigin, lastDirection));
+                if (!writer.Flush()) ThrowSystemError("write error");
+                nextFlush = flushInterval;
+            } else {
+                const Vec3 dir = ray->direction / length;
+                const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
+                RayResult r = evaluator->TraceInput(ray->origin, dir, rmax, index);
+                lastOrigin = r.origin;
+                lastDirection = r.direction;
+                writer.WriteRecord(spec.fields, r);
+                if (--nextFlush == 0) {
+                    if (!writer.Flush()) ThrowSystemError("write error");
+                    nextFlush = flushInterval;
+                }
+            }
+            ++index;
+            if (counting && --remaining == 0) break;
+        }
+        if (!writer.Flush()) ThrowSystemError("write error");
+        if (counting && remaining > 0) warn("unexpected EOF on input");
+    } catch (const Error& e) {
+        // Results computed before the problem are delivered first.
+        writer.Flush();
+        ReportError(*msg, prog, e);
+        return e.ExitCode();
+    } catch (const std::exception& e) {
+        writer.Flush();
+        *msg << prog << ": internal - " << e.what() << '\n';
+        msg->flush();
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace rt
