@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+#include "ambient/cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/conventions.h"
+
+namespace rt {
+namespace {
+
+/// Extrapolation factors are trusted between these bounds (Radiance 5 uses
+/// the same clamp; the classic code only cut negative values to zero, which
+/// let one record drag an interpolation toward black).
+constexpr double kMinExtrapolation = 0.05;
+constexpr double kMaxExtrapolation = 20.0;
+
+bool IsUsable(const AmbientRecord& r) {
+    return std::isfinite(r.radius[0]) && std::isfinite(r.radius[1]) && r.radius[0] > 0 &&
+           r.radius[1] > 0 && IsFinite(r.value) && IsFinite(r.position) && IsFinite(r.normal) &&
+           r.value.r >= 0 && r.value.g >= 0 && r.value.b >= 0;
+}
+
+}  // namespace
+
+AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy,
+                           AmbientLimits limits)
+    : accuracy_(accuracy), limits_(limits), index_(cubeOrigin, cubeSize > 0 ? cubeSize : 1.0) {}
+
+bool AmbientCache::Add(const AmbientRecord& record) {
+    if (!IsUsable(record)) return false;
+    const auto id = static_cast<std::uint32_t>(records_.size());
+    records_.push_back(record);
+    // A record can only be accepted within a·r1 of its position (ε >= |Δ|/r1).
+    index_.Insert(record.position, accuracy_ * std::max(record.radius[0], record.radius[1]), id);
+    const double b = Bright(record.value);
+    if (b > kFtiny) {
+        logBrightSum_ += std::log(b);
+        ++logBrightCount_;
+    }
+    return true;
+}
+
+std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q) const {
+    const double a = accuracy_;
+    // A record whose plane lies in front of the query point by more than this
+    // is on another surface (Radiance's "behind" tolerance).
+    const double behindTolerance = limits_.minRadius * a + 0.001;
+    Rgb sum;
+    double weightSum = 0;
+    index_.ForEachContaining(q.point, [&](std::uint32_t id) {
+        const AmbientRecord& r = records_[id];
+        // A record answers only queries of its own bounce depth: its value
+        // holds exactly the bounces left at that depth. (Radiance also lets
+        // deeper queries use shallower records, which mixes bounce counts and
+        // makes its white furnace 3 % dark at -ab 3.) Within the depth, the
+        // record must come from a ray about as important as this one.
+        if (r.level != q.level) return;
+        if (r.weight < 0.9 * q.rayWeight) return;
+        const double cosNormals = Dot(r.normal, q.normal);
+        if (cosNormals <= 0) return;
+        const Vec3 delta = q.point - r.position;
+        if (0.5 * Dot(delta, r.normal + q.normal) < -behindTolerance) return;
+        // Split-sphere error: distance in units of the record's radius (its
+        // ellipse for anisotropic records) plus the normal divergence.
+        const Vec3 u = r.uAxis;
+        const Vec3 v = r.VAxis();
+        const double du = Dot(delta, u) / r.radius[0];
+        const double dv = Dot(delta, v) / r.radius[1];
+        const double dn = Dot(delta, r.normal) / r.radius[0];
+        const double e1 = du * du + dv * dv + dn * dn;
+        const double e2 = std::max(0.0, 1.0 - cosNormals);
+        const double eps = std::sqrt(e1) + std::sqrt(e2);
+        if (eps >= a) return;  // weight 1/ε must exceed 1/a
+        // First-order extrapolation (Ward & Heckbert 1992).
+        double f = 1.0 + Dot(delta, u * r.posGradient[0] + v * r.posGradient[1]) +
+                   Dot(Cross(r.normal, q.shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
+        if (!(f >= kMinExtrapolation)) return;
+        f = std::min(f, kMaxExtrapolation);
+        const double w = eps > 1e-3 ? 1.0 / eps : 1e3;
+        sum += r.value * (w * f);
+        weightSum += w;
+    });
+    if (weightSum <= kFtiny) return std::nullopt;
+    return sum / weightSum;
+}
+
+Rgb AveragedAmbientValue(const Rgb& av, int valueWeight, double logBrightSum, int logBrightCount) {
+    if (valueWeight <= 0 || logBrightCount <= 0) return av;
+    const double logAverageReflectance = std::log(0.5);  // Radiance's AVGREFL
+    const double l = Bright(av);
+    if (l > kFtiny) {
+        const double mean = std::exp((valueWeight * std::log(l) + logBrightSum +
+                                      logAverageReflectance * logBrightCount) /
+                                     (valueWeight + logBrightCount));
+        return av * (mean / l);
+    }
+    return Rgb::Grey(std::exp(logBrightSum / logBrightCount + logAverageReflectance));
+}
+
+}  // namespace rt

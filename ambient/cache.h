@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+//
+// The in-memory irradiance cache: records indexed by a SphereOctree and
+// interpolated with Ward's split-sphere weights and Ward & Heckbert's
+// first-order gradients (radiance-notes.md §4.12, Radiance ≤ 4.2
+// sumambient()). Records read from Radiance 5 files carry two radii and a
+// u-axis; the distance term then uses the record's ellipse (§4.3).
+//
+// Not thread-safe for writers; concurrent Interpolate() calls are safe while
+// no Add() runs.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "ambient/limits.h"
+#include "ambient/record.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+#include "octree/sphere_octree.h"
+
+namespace rt {
+
+/// Where and for whom an ambient value is wanted.
+struct AmbientQuery {
+    Vec3 point;          // shading point
+    Vec3 normal;         // unperturbed surface normal, facing the incoming ray
+    Vec3 shadingNormal;  // perturbed normal (== normal without textures)
+    int level = 0;       // current ambient depth: only records of this level are used
+    double rayWeight = 1;  // weight of the ray being shaded
+};
+
+class AmbientCache {
+public:
+    /// `cubeOrigin/cubeSize` bound the scene (records outside still work);
+    /// `accuracy` is -aa (> 0).
+    AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy, AmbientLimits limits);
+
+    /// Stores a record (computed here or read from a file). Records with a
+    /// non-positive or non-finite radius, or non-finite values, are ignored
+    /// (returns false).
+    bool Add(const AmbientRecord& record);
+
+    /// Weighted average Σ w_i E'_i / Σ w_i over the records acceptable at the
+    /// query (w_i = 1/ε_i > 1/a); nullopt when none is acceptable. Never
+    /// negative: a record whose extrapolation factor drops below 0.05 is not used.
+    std::optional<Rgb> Interpolate(const AmbientQuery& query) const;
+
+    std::size_t size() const { return records_.size(); }
+    const std::vector<AmbientRecord>& records() const { return records_; }
+    const AmbientLimits& limits() const { return limits_; }
+
+    /// Σ ln(bright(value)) and count over records with bright > 1e-6, for the
+    /// -aw running average (Radiance's avsum/navsum).
+    double logBrightSum() const { return logBrightSum_; }
+    int logBrightCount() const { return logBrightCount_; }
+
+private:
+    double accuracy_;
+    AmbientLimits limits_;
+    SphereOctree index_;
+    std::vector<AmbientRecord> records_;
+    double logBrightSum_ = 0;
+    int logBrightCount_ = 0;
+};
+
+/// Radiance's -aw fallback ("dumbamb"): the ambient value `av` blended in log
+/// space with the cache's values, assuming 50 % average reflectance
+/// (radiance-notes.md §4.1 step 7). With `valueWeight <= 0` or no positive
+/// record, `av` itself.
+Rgb AveragedAmbientValue(const Rgb& av, int valueWeight, double logBrightSum, int logBrightCount);
+
+}  // namespace rt

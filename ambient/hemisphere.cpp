@@ -1,0 +1,376 @@
+// SPDX-License-Identifier: MIT
+//
+// Ward's classic stratified hemisphere sampler, adaptive super-sampling and
+// the Ward & Heckbert (1992) irradiance gradients (radiance-notes.md §4.12,
+// Radiance ≤ 4.2 ambcomp.c: inithemi, divsample, comperrs, posgradient,
+// dirgradient, doambient). Written from the formulas, not from that code.
+#include "ambient/hemisphere.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <utility>
+#include <vector>
+
+#include "core/check.h"
+#include "core/conventions.h"
+
+namespace rt {
+namespace {
+
+/// Super-sampling needs more than 8 extra samples (Radiance 5's threshold,
+/// applied to the classic sampler: fewer cannot move the estimate usefully).
+constexpr int kMinSuperSamples = 9;
+/// ...and at least this many rows, so every division has a neighbour above or
+/// below for the variance estimate.
+constexpr int kMinSuperSampleRows = 2;
+/// Keeps nt·np inside int for absurd -ad values (16384 rows = 8.4e8
+/// divisions); Radiance has no such cap.
+constexpr int kMaxRows = 16384;
+
+/// One (row t, column p) cell of the hemisphere.
+struct Division {
+    Rgb mean;                           // running mean radiance over its samples
+    double error = 0;                   // Radiance's variance estimate k (brightness²)
+    double nearestInverseDistance = 0;  // max 1/d over its samples (0: misses at infinity)
+    int samples = 0;                    // successful samples; 0 = the division failed
+};
+
+/// The nt × np divisions, row-major (row t = sin²θ in [t/nt, (t+1)/nt)).
+class DivisionGrid {
+  public:
+    DivisionGrid(int rows, int columns)
+        : rows_(rows),
+          columns_(columns),
+          cells_(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns)) {}
+
+    int Rows() const { return rows_; }
+    int Columns() const { return columns_; }
+    int Size() const { return rows_ * columns_; }
+    Division& operator[](int i) { return cells_[static_cast<std::size_t>(i)]; }
+    const Division& operator[](int i) const { return cells_[static_cast<std::size_t>(i)]; }
+    Division& At(int t, int p) { return (*this)[t * columns_ + p]; }
+    const Division& At(int t, int p) const { return (*this)[t * columns_ + p]; }
+    /// Column before p, wrapping around the azimuth.
+    int Previous(int p) const { return p > 0 ? p - 1 : columns_ - 1; }
+    const std::vector<Division>& Cells() const { return cells_; }
+
+  private:
+    int rows_, columns_;
+    std::vector<Division> cells_;
+};
+
+int RowCount(const HemisphereOptions& options) {
+    const double x = static_cast<double>(options.divisions) * options.weight / kPi;
+    int rows = 0;
+    // !(x > 0) also catches a NaN weight.
+    if (x > 0)
+        rows = static_cast<int>(std::sqrt(std::min(x, 1e9)) + 0.5);
+    return std::clamp(rows, options.caching ? 3 : 1, kMaxRows);
+}
+
+/// Cosine-weighted direction in division (t, p) with jitter (xi0, xi1) ∈ [0,1)²:
+/// sin²θ is uniform within the row, φ within the column (§4.12).
+Vec3 DivisionDirection(const Frame& frame, int t, int p, int rows, int columns, double xi0,
+                       double xi1) {
+    const double sin2 = (t + xi0) / rows;
+    const double sinTheta = std::sqrt(sin2);
+    const double cosTheta = std::sqrt(1.0 - sin2);
+    const double phi = 2.0 * kPi * (p + xi1) / columns;
+    return frame.u * (std::cos(phi) * sinTheta) + frame.v * (std::sin(phi) * sinTheta) +
+           frame.n * cosTheta;
+}
+
+/// The hemisphere frame around unit n. Radiance ≤ 4.2 used the fixed
+/// getperpendicular() axis, so neighbouring records shared one division
+/// layout and its aliasing; a random azimuth (as Radiance 5 does) decorrelates
+/// them. The u axis is stored in the record, so nothing downstream depends on it.
+Frame RandomFrame(const Vec3& n, Rng& rng) {
+    const Vec3 u0 = Perpendicular(n);
+    const Vec3 v0 = Cross(n, u0);
+    const double azimuth = 2.0 * kPi * rng.Uniform();
+    Frame frame;
+    frame.n = n;
+    frame.u = Normalize(u0 * std::cos(azimuth) + v0 * std::sin(azimuth));
+    frame.v = Cross(n, frame.u);
+    return frame;
+}
+
+/// A usable radiance sample, or nullopt when the ray failed. Negative channels
+/// are cut to zero so the result is never negative (the header's contract).
+struct Traced {
+    Rgb radiance;
+    double inverseDistance = 0;
+};
+std::optional<Traced> TraceOne(const AmbientTraceFn& trace, const Vec3& dir) {
+    const std::optional<AmbientSample> s = trace(dir);
+    if (!s || !(s->distance > 0) || !IsFinite(s->radiance))
+        return std::nullopt;
+    Traced out;
+    out.radiance = Rgb(std::max(s->radiance.r, 0.0), std::max(s->radiance.g, 0.0),
+                       std::max(s->radiance.b, 0.0));
+    out.inverseDistance = 1.0 / s->distance;  // 0 for an infinite miss distance
+    return out;
+}
+
+/// Super-sampling priorities from each division's *neighbours* only: the
+/// variance of the first-pass brightness of the divisions around it (same
+/// column above and below, same row left and right with wrap-around). A
+/// division an edge crosses has neighbours on both sides of the edge.
+///
+/// Why not Radiance's estimate, which includes the division's own sample:
+/// then a division whose first sample happened to catch a small bright patch
+/// gets refined (and its mean pulled down to the truth) while one whose
+/// first sample missed the patch stays dark, so the hemisphere comes out
+/// biased low — measured 7 % low at dim points of the cornell box. With the
+/// division's own sample left out, how many extra samples it gets does not
+/// depend on its own value, and its mean stays unbiased.
+void NeighbourPriorities(DivisionGrid& divs) {
+    const int rows = divs.Rows();
+    for (int t = 0; t < rows; ++t) {
+        for (int p = 0; p < divs.Columns(); ++p) {
+            double b[4];
+            int n = 0;
+            if (t > 0) b[n++] = Bright(divs.At(t - 1, p).mean);
+            if (t + 1 < rows) b[n++] = Bright(divs.At(t + 1, p).mean);
+            b[n++] = Bright(divs.At(t, divs.Previous(p)).mean);
+            b[n++] = Bright(divs.At(t, (p + 1) % divs.Columns()).mean);
+            double mean = 0;
+            for (int i = 0; i < n; ++i) mean += b[i];
+            mean /= n;
+            double var = 0;
+            for (int i = 0; i < n; ++i) var += (b[i] - mean) * (b[i] - mean);
+            divs.At(t, p).error = var / n;
+        }
+    }
+}
+
+/// Adds one super-sample to a division: running mean, and Radiance's
+/// incremental variance estimate k_n = ((mean_n − x_n)² + (n−1)²·k_{n−1}) / n².
+void AddSuperSample(Division& d, const Traced& sample) {
+    const int n = ++d.samples;
+    // mean += (x − mean)/n keeps a constant environment exactly constant.
+    d.mean += (sample.radiance - d.mean) * (1.0 / n);
+    // The gradient weights want the nearest surface seen in the division (as
+    // Radiance 5 keeps): a division the edge of a near emitter cuts must keep
+    // the emitter's distance even if its first sample missed. The first-sample
+    // distance alone (still the header's radius statistic) gave single -ad 1024
+    // -as 512 hemispheres up to 33% gradient error at a sharp edge, and
+    // Radiance ≤ 4.2's mean 1/d a 13-17% low gradient there (half-plane test).
+    d.nearestInverseDistance = std::max(d.nearestInverseDistance, sample.inverseDistance);
+    const Rgb& radiance = sample.radiance;
+    const double diff = Bright(d.mean) - Bright(radiance);
+    const double previous = static_cast<double>(n - 1) * (n - 1);
+    d.error = (diff * diff + d.error * previous) / (static_cast<double>(n) * n);
+}
+
+/// Ward & Heckbert's translational gradient of E (absolute, W·m⁻² per unit
+/// length) from brightness differences across division boundaries, each
+/// weighted by the nearer of the two divisions' nearest hits (Radiance's
+/// posgradient). Row-boundary terms point along the column centre, as in the
+/// paper; Radiance ≤ 4.2 used the column's start φ_j, which rotates them by
+/// π/np and gave a spurious 0.8% sideways component in the half-plane test.
+Vec3 TranslationalGradient(const DivisionGrid& divs, const Frame& frame) {
+    const int rows = divs.Rows();
+    const int columns = divs.Columns();
+    double xd = 0, yd = 0;
+    for (int p = 0; p < columns; ++p) {
+        double acrossRows = 0;     // Σ over row boundaries (θ direction)
+        double acrossColumns = 0;  // Σ over the boundary with column p−1 (φ direction)
+        double lastSine = 0;
+        for (int t = 0; t < rows; ++t) {
+            const Division& d = divs.At(t, p);
+            const double b = Bright(d.mean);
+            if (t > 0) {
+                const Division& up = divs.At(t - 1, p);
+                const double r = std::max(up.nearestInverseDistance, d.nearestInverseDistance);
+                const double cos2 = 1.0 - static_cast<double>(t) / rows;  // at the boundary
+                acrossRows += r * lastSine * cos2 * (b - Bright(up.mean));
+            }
+            const double nextSine = std::sqrt(static_cast<double>(t + 1) / rows);
+            const Division& left = divs.At(t, divs.Previous(p));
+            const double r = std::max(left.nearestInverseDistance, d.nearestInverseDistance);
+            acrossColumns += r * (nextSine - lastSine) * (b - Bright(left.mean));
+            lastSine = nextSine;
+        }
+        acrossRows *= 2.0 * kPi / columns;
+        const double phiCentre = 2.0 * kPi * (p + 0.5) / columns;
+        const double phiEdge = 2.0 * kPi * p / columns;
+        xd += acrossRows * std::cos(phiCentre) - acrossColumns * std::sin(phiEdge);
+        yd += acrossRows * std::sin(phiCentre) + acrossColumns * std::cos(phiEdge);
+    }
+    return frame.u * xd + frame.v * yd;
+}
+
+/// Ward & Heckbert's rotational gradient of E (absolute, W·m⁻² per radian):
+/// rotating the normal about axis a by δ changes E by δ·(g·a). Each column
+/// contributes Σ_t L·tanθ along φ + π/2 (Radiance's dirgradient), times π/(nt·np).
+Vec3 RotationalGradient(const DivisionGrid& divs, const Frame& frame) {
+    const int rows = divs.Rows();
+    const int columns = divs.Columns();
+    // Mean of tanθ over each row for cosine-distributed directions, i.e. with
+    // x = sin²θ uniform in [t/nt, (t+1)/nt]: nt·[F(x)] with F(x) = asin√x −
+    // √(x(1−x)), the antiderivative of √(x/(1−x)). Radiance ≤ 4.2 took tanθ at
+    // the row's centre, which misses the integrable 1/√(1−x) rise toward the
+    // horizon and made the gradient ~5% low for a sky bright down to the
+    // horizon at nt = 72 (hemisphere_test: GradientsMatchHalfPlaneEmitter).
+    std::vector<double> meanTan(static_cast<std::size_t>(rows));
+    auto antiderivative = [](double x) {
+        return std::asin(std::sqrt(x)) - std::sqrt(x * (1.0 - x));
+    };
+    for (int t = 0; t < rows; ++t) {
+        const double x0 = static_cast<double>(t) / rows;
+        const double x1 = t + 1 == rows ? 1.0 : static_cast<double>(t + 1) / rows;
+        meanTan[static_cast<std::size_t>(t)] = rows * (antiderivative(x1) - antiderivative(x0));
+    }
+    double xd = 0, yd = 0;
+    for (int p = 0; p < columns; ++p) {
+        double mag = 0;
+        for (int t = 0; t < rows; ++t)
+            mag += Bright(divs.At(t, p).mean) * meanTan[static_cast<std::size_t>(t)];
+        const double phi = 2.0 * kPi * (p + 0.5) / columns + 0.5 * kPi;
+        xd += mag * std::cos(phi);
+        yd += mag * std::sin(phi);
+    }
+    const double scale = kPi / (static_cast<double>(rows) * columns);
+    return (frame.u * xd + frame.v * yd) * scale;
+}
+
+}  // namespace
+
+Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
+                            const AmbientTraceFn& trace) {
+    RT_DCHECK(LengthSquared(normal) > 0);
+    Hemisphere h;
+    h.frame = RandomFrame(Normalize(normal), rng);
+    h.rows = RowCount(options);
+    h.columns = static_cast<int>(kPi * h.rows + 0.5);
+    const int rows = h.rows;
+    const int columns = h.columns;
+
+    DivisionGrid divs(rows, columns);
+    int failed = 0;
+    for (int t = 0; t < rows; ++t) {
+        for (int p = 0; p < columns; ++p) {
+            const double xi0 = rng.Uniform();
+            const double xi1 = rng.Uniform();
+            ++h.raysTraced;
+            const std::optional<Traced> s =
+                TraceOne(trace, DivisionDirection(h.frame, t, p, rows, columns, xi0, xi1));
+            if (!s) {
+                ++failed;
+                continue;
+            }
+            Division& d = divs.At(t, p);
+            d.mean = s->radiance;
+            d.samples = 1;
+            d.nearestInverseDistance = s->inverseDistance;
+            h.inverseDistanceSum += s->inverseDistance;
+            ++h.distanceCount;
+        }
+    }
+    h.complete = failed == 0;
+
+    const double extraWanted = std::max(0.0, options.superSamples * options.weight);
+    const int extra = static_cast<int>(std::min(extraWanted, 1e9) + 0.5);
+    if (h.complete && extra >= kMinSuperSamples && rows >= kMinSuperSampleRows) {
+        NeighbourPriorities(divs);
+        double total = 0;
+        for (const Division& d : divs.Cells()) total += d.error;
+        // Extra samples in proportion to priority, fixed before any is taken.
+        // Systematic sampling (one random offset over the cumulative shares)
+        // gives each division its share in expectation and exactly `extra`
+        // samples in total.
+        const double offset = rng.Uniform();
+        double cumulative = 0;
+        for (int i = 0; total > 0 && i < divs.Size(); ++i) {
+            const double before = std::floor(cumulative + offset);
+            cumulative += extra * divs[i].error / total;
+            const int count = static_cast<int>(std::floor(cumulative + offset) - before);
+            const int t = i / columns;
+            const int p = i % columns;
+            for (int k = 0; k < count; ++k) {
+                const double xi0 = rng.Uniform();
+                const double xi1 = rng.Uniform();
+                ++h.raysTraced;
+                const std::optional<Traced> s =
+                    TraceOne(trace, DivisionDirection(h.frame, t, p, rows, columns, xi0, xi1));
+                if (!s) break;  // keeps the samples it has
+                AddSuperSample(divs[i], *s);
+            }
+        }
+    }
+
+    Rgb sum;
+    for (const Division& d : divs.Cells())
+        sum += d.mean;
+    h.value = sum * (1.0 / (static_cast<double>(rows) * columns));
+
+    const double b = Bright(h.value);
+    if (h.complete && b > kFtiny) {
+        // Relative gradients: E = π·Ē, so ∇E / E = ∇E / (π·bright(Ē)).
+        const double toRelative = 1.0 / (kPi * b);
+        h.posGradient = TranslationalGradient(divs, h.frame) * toRelative;
+        h.dirGradient = RotationalGradient(divs, h.frame) * toRelative;
+        if (!IsFinite(h.posGradient))
+            h.posGradient = Vec3();
+        if (!IsFinite(h.dirGradient))
+            h.dirGradient = Vec3();
+    }
+    return h;
+}
+
+std::optional<AmbientRecord> MakeClassicRecord(const Vec3& position, const Vec3& normal,
+                                               const Hemisphere& hemisphere, int level,
+                                               double weight, const AmbientLimits& limits) {
+    if (!hemisphere.complete || !(weight > 0) || !IsFinite(hemisphere.value))
+        return std::nullopt;
+    Vec3 g = IsFinite(hemisphere.posGradient) ? hemisphere.posGradient : Vec3();
+    const Vec3 gDir = IsFinite(hemisphere.dirGradient) ? hemisphere.dirGradient : Vec3();
+
+    // Harmonic mean distance; Radiance's FTINY test treats "everything at
+    // FHUGE" as nothing nearby.
+    double radius = limits.maxRadius;
+    if (hemisphere.distanceCount > 0 && hemisphere.inverseDistanceSum > kFtiny)
+        radius = hemisphere.distanceCount / hemisphere.inverseDistanceSum;
+    const double g2 = LengthSquared(g);
+    // Where E changes fast the record must not reach further than 1/|g|.
+    if (g2 * radius * radius > 1.0)
+        radius = 1.0 / std::sqrt(g2);
+    if (radius < limits.minRadius) {
+        radius = limits.minRadius;
+        // ...and at the minimum radius the gradient is trusted only up to |g|·R = 1.
+        if (g2 * radius * radius > 1.0)
+            g = g * (1.0 / (radius * std::sqrt(g2)));
+    }
+    // Weak records (deeper bounces) may be used further away (Radiance ≤ 4.2).
+    radius /= std::sqrt(weight);
+    radius = std::min(std::max(radius, limits.minRadius), limits.maxRadius);
+    if (!(radius > 0) || !std::isfinite(radius))
+        return std::nullopt;
+    // The gradient is trusted only up to |g|·R = 1 for the radius actually
+    // stored (Radiance 5 caps it the same way, after the weight): Radiance ≤
+    // 4.2 capped it before dividing by sqrt(weight), so a level-1 record could
+    // extrapolate 40 % further than its gradient is good for, and the cornell
+    // floor next to the blocks came out up to 10 % bright at -aa .2.
+    if (LengthSquared(g) * radius * radius > 1.0)
+        g = g * (1.0 / (radius * std::sqrt(LengthSquared(g))));
+
+    AmbientRecord rec;
+    rec.position = position;
+    rec.normal = normal;
+    rec.uAxis = hemisphere.frame.u;
+    const Vec3 v = rec.VAxis();
+    rec.value = hemisphere.value;
+    rec.radius[0] = rec.radius[1] = radius;
+    rec.posGradient[0] = Dot(g, rec.uAxis);
+    rec.posGradient[1] = Dot(g, v);
+    rec.dirGradient[0] = Dot(gDir, rec.uAxis);
+    rec.dirGradient[1] = Dot(gDir, v);
+    rec.level = level;
+    rec.weight = weight;
+    rec.corral = 0;
+    return rec;
+}
+
+}  // namespace rt

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+//
+// Ward's stratified hemisphere sampling for one irradiance-cache record, with
+// adaptive super-sampling and the Ward & Heckbert (1992) translational and
+// rotational gradients (radiance-notes.md §4.12, Radiance ≤ 4.2 ambcomp.c).
+// The caller supplies the tracing: ambient/ knows nothing of rays or scenes.
+//
+//   Hemisphere h = SampleHemisphere(normal, options, rng, [&](const Vec3& dir) {
+//       return TraceAmbientRay(point, dir);   // radiance and hit distance
+//   });
+//   if (auto rec = MakeClassicRecord(point, normal, h, level, weight, limits)) cache.Add(*rec);
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+
+#include "ambient/limits.h"
+#include "ambient/record.h"
+#include "core/random.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+
+namespace rt {
+
+/// What one hemisphere ray returned.
+struct AmbientSample {
+    Rgb radiance;           // radiance arriving along the ray (W·sr⁻¹·m⁻²)
+    double distance = 0;    // effective hit distance (> 0); a miss reports a large distance
+};
+
+/// Traces one ray from the record's point in unit direction `dir`; nullopt
+/// when the ray was refused (weight limits) or hit at distance <= 1e-6.
+using AmbientTraceFn = std::function<std::optional<AmbientSample>(const Vec3& dir)>;
+
+struct HemisphereOptions {
+    int divisions = 1024;    // -ad: about this many first-pass samples at weight 1
+    int superSamples = 512;  // -as: extra samples at weight 1, sent where neighbours differ most
+    double weight = 1;       // record weight: sample counts scale with it (0.5^level)
+    bool caching = true;     // -aa > 0: at least 3 rows; without cache at least 1
+};
+
+struct Hemisphere {
+    Rgb value;                // Ē: cosine-weighted mean incident radiance (= irradiance/π)
+    bool complete = false;    // every division has at least one successful sample
+    int rows = 0;             // nt (altitude divisions)
+    int columns = 0;          // np (azimuth divisions)
+    int raysTraced = 0;       // first pass + super-samples
+    double inverseDistanceSum = 0;  // Σ 1/d over the first sample of each division
+    int distanceCount = 0;          // how many samples that sum has
+    Frame frame;              // u, v, n used for the divisions
+    Vec3 posGradient;         // relative translational gradient, tangent to n (1/length)
+    Vec3 dirGradient;         // relative rotational gradient, tangent to n (1/radian)
+};
+
+/// Ward's division counts for `options` (radiance-notes.md §4.12): rows
+/// nt = (int)(sqrt(divisions·weight/π) + 0.5), at least 3 when caching and 1
+/// otherwise, and columns np = (int)(π·nt + 0.5). The caller needs them to
+/// give each sample ray its share of the coefficient.
+struct DivisionCounts {
+    int rows = 0;
+    int columns = 0;
+    int total() const { return rows * columns; }
+};
+inline DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
+    constexpr double kPiLocal = 3.14159265358979323846;
+    double d = static_cast<double>(options.divisions) * options.weight / kPiLocal;
+    int rows = d > 0 ? static_cast<int>(std::sqrt(d) + 0.5) : 0;
+    rows = std::max(rows, options.caching ? 3 : 1);
+    return {rows, static_cast<int>(kPiLocal * rows + 0.5)};
+}
+
+/// Samples the hemisphere around unit `normal`. Never returns NaN or
+/// negative values; failed samples count as zero radiance and make the
+/// result incomplete.
+Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
+                            const AmbientTraceFn& trace);
+
+/// Turns a complete hemisphere into a classic (isotropic) record: radius from
+/// the harmonic mean distance, limited by the gradient and clamped to
+/// [minRadius, maxRadius] after dividing by sqrt(weight), gradients capped so
+/// |g|·R <= 1 (radiance-notes.md §4.12). nullopt for an incomplete hemisphere.
+std::optional<AmbientRecord> MakeClassicRecord(const Vec3& position, const Vec3& normal,
+                                               const Hemisphere& hemisphere, int level,
+                                               double weight, const AmbientLimits& limits);
+
+}  // namespace rt

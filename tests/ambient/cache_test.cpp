@@ -1,0 +1,200 @@
+// The irradiance cache's acceptance and interpolation rules (Ward's
+// split-sphere weights, Ward & Heckbert gradients, Radiance's behind and
+// level tests) on hand-made records, and -ar/-aw helpers.
+#include "ambient/cache.h"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+namespace rt {
+namespace {
+
+AmbientRecord FloorRecord(Vec3 pos, double value, double radius) {
+    AmbientRecord r;
+    r.position = pos;
+    r.normal = Vec3(0, 0, 1);
+    r.uAxis = Vec3(1, 0, 0);
+    r.value = Rgb::Grey(value);
+    r.radius[0] = r.radius[1] = radius;
+    r.level = 0;
+    r.weight = 1;
+    return r;
+}
+
+AmbientQuery FloorQuery(Vec3 p, int level = 0, double weight = 1) {
+    AmbientQuery q;
+    q.point = p;
+    q.normal = q.shadingNormal = Vec3(0, 0, 1);
+    q.level = level;
+    q.rayWeight = weight;
+    return q;
+}
+
+AmbientCache MakeCache(double accuracy = 0.1) {
+    return AmbientCache(Vec3(-10, -10, -10), 20, accuracy, AmbientLimits{0.01, 5});
+}
+
+TEST(AmbientCache, AcceptsWithinAccuracyTimesRadius) {
+    AmbientCache cache = MakeCache();
+    ASSERT_TRUE(cache.Add(FloorRecord({0, 0, 0}, 0.5, 1)));
+    auto near = cache.Interpolate(FloorQuery({0.05, 0, 0}));
+    ASSERT_TRUE(near);
+    EXPECT_DOUBLE_EQ(near->g, 0.5);
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0.1, 0, 0})));  // ε = a: weight 1/a not > 1/a
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0.2, 0})));
+}
+
+TEST(AmbientCache, WeightsAreInverseSplitSphereError) {
+    AmbientCache cache = MakeCache(0.2);
+    cache.Add(FloorRecord({0, 0, 0}, 0.5, 0.8));
+    cache.Add(FloorRecord({0.1, 0, 0}, 0.3, 0.8));
+    // Query at x = 0.02: ε = 0.025 and 0.1, weights 40 and 10.
+    auto v = cache.Interpolate(FloorQuery({0.02, 0, 0}));
+    ASSERT_TRUE(v);
+    EXPECT_NEAR(v->g, (40 * 0.5 + 10 * 0.3) / 50, 1e-12);
+}
+
+TEST(AmbientCache, NormalDivergenceCountsInTheError) {
+    AmbientCache cache = MakeCache(0.1);
+    cache.Add(FloorRecord({0, 0, 0}, 0.5, 1));
+    AmbientQuery q = FloorQuery({0, 0, 0});
+    // 1 - cos θ = 0.0025 gives sqrt = 0.05 < a: accepted.
+    double c = 1 - 0.0025;
+    q.normal = q.shadingNormal = Vec3(std::sqrt(1 - c * c), 0, c);
+    EXPECT_TRUE(cache.Interpolate(q));
+    // 30 degrees: sqrt(1 - cos 30°) = 0.37 > a.
+    q.normal = q.shadingNormal = Vec3(0.5, 0, std::sqrt(0.75));
+    EXPECT_FALSE(cache.Interpolate(q));
+    q.normal = q.shadingNormal = Vec3(0, 0, -1);
+    EXPECT_FALSE(cache.Interpolate(q));
+}
+
+TEST(AmbientCache, RecordsInFrontOfTheQueryAreRejected) {
+    AmbientCache cache = MakeCache(0.5);
+    cache.Add(FloorRecord({0, 0, 0.1}, 0.5, 1));  // a shelf 0.1 above the query
+    // Query lies 0.1 behind the record's plane: more than minRadius·a + 0.001.
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0})));
+    // The other way round (record below the query) is fine.
+    AmbientCache other = MakeCache(0.5);
+    other.Add(FloorRecord({0, 0, 0}, 0.5, 1));
+    EXPECT_TRUE(other.Interpolate(FloorQuery({0, 0, 0.1})));
+}
+
+TEST(AmbientCache, LevelAndWeightDecideEligibility) {
+    AmbientCache cache = MakeCache();
+    AmbientRecord deep = FloorRecord({0, 0, 0}, 0.5, 1);
+    deep.level = 1;
+    deep.weight = 0.5;
+    cache.Add(deep);
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 0, 1)));   // deeper record
+    EXPECT_TRUE(cache.Interpolate(FloorQuery({0, 0, 0}, 1, 0.5)));  // same level, same weight
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 1, 0.6)));  // weight < 0.9 · 0.6
+    // A shallower record holds a different number of bounces: not used either.
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 2, 0.25)));
+}
+
+TEST(AmbientCache, GradientsExtrapolateToFirstOrder) {
+    AmbientCache cache = MakeCache(0.2);
+    AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 1);
+    r.posGradient[0] = 0.4;   // +40 % per unit length along x
+    r.dirGradient[1] = -0.2;  // per radian of rotation about v = y
+    cache.Add(r);
+    auto v = cache.Interpolate(FloorQuery({0.1, 0, 0}));
+    ASSERT_TRUE(v);
+    EXPECT_NEAR(v->g, 0.5 * (1 + 0.04), 1e-12);
+    // Tilt the shading normal by 0.05 rad toward +x: Ni × N' = (0, 0.05, 0)·…
+    AmbientQuery q = FloorQuery({0, 0, 0});
+    q.shadingNormal = Normalize(Vec3(std::sin(0.05), 0, std::cos(0.05)));
+    v = cache.Interpolate(q);
+    ASSERT_TRUE(v);
+    EXPECT_NEAR(v->g, 0.5 * (1 - 0.2 * std::sin(0.05)), 1e-12);
+}
+
+TEST(AmbientCache, NeverNegativeEvenWithSteepGradients) {
+    AmbientCache cache = MakeCache(0.3);
+    AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 1);
+    r.posGradient[0] = -50;
+    cache.Add(r);
+    cache.Add(FloorRecord({0.3, 0, 0}, 0.2, 1));
+    auto v = cache.Interpolate(FloorQuery({0.2, 0, 0}));
+    ASSERT_TRUE(v);  // the steep record is left out, the other one answers
+    EXPECT_DOUBLE_EQ(v->g, 0.2);
+}
+
+TEST(AmbientCache, AnisotropicRecordsUseTheirEllipse) {
+    AmbientCache cache = MakeCache(0.1);
+    AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0.5);
+    r.radius[1] = 1.0;  // longer along v = y
+    cache.Add(r);
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0.06, 0, 0})));  // 0.06/0.5 = 0.12 > a
+    EXPECT_TRUE(cache.Interpolate(FloorQuery({0, 0.06, 0})));   // 0.06/1.0 = 0.06 < a
+}
+
+TEST(AmbientCache, InvalidRecordsAreIgnored) {
+    AmbientCache cache = MakeCache();
+    AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0);
+    EXPECT_FALSE(cache.Add(r));
+    r.radius[0] = r.radius[1] = 1;
+    r.value = Rgb(std::nan(""), 0, 0);
+    EXPECT_FALSE(cache.Add(r));
+    EXPECT_EQ(cache.size(), 0u);
+}
+
+/// The octree must find exactly the records a scan of all records finds.
+TEST(AmbientCache, IndexAgreesWithExhaustiveScan) {
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> u(-5, 5), rad(0.05, 2), val(0.1, 1);
+    AmbientCache cache = MakeCache(0.2);
+    std::vector<AmbientRecord> all;
+    for (int i = 0; i < 2000; ++i) {
+        AmbientRecord r = FloorRecord({u(gen), u(gen), 0}, val(gen), rad(gen));
+        r.posGradient[0] = 0.1 * u(gen);
+        all.push_back(r);
+        cache.Add(r);
+    }
+    for (int i = 0; i < 40; ++i) {  // the exhaustive side is slow under sanitizers
+        Vec3 p(u(gen), u(gen), 0);
+        Rgb sum;
+        double wsum = 0;
+        for (const AmbientRecord& r : all) {
+            // Same result through a one-record cache, record by record.
+            AmbientCache one = MakeCache(0.2);
+            one.Add(r);
+            if (auto v = one.Interpolate(FloorQuery(p))) {
+                double d = Length(p - r.position) / r.radius[0];
+                double w = d > 1e-3 ? 1 / d : 1e3;
+                sum += *v * w;
+                wsum += w;
+            }
+        }
+        auto got = cache.Interpolate(FloorQuery(p));
+        ASSERT_EQ(got.has_value(), wsum > 1e-6) << p;
+        if (got) {
+            EXPECT_NEAR(got->g, sum.g / wsum, 1e-9);
+        }
+    }
+}
+
+TEST(AmbientLimits, FollowRadianceSetambres) {
+    AmbientLimits l = AmbientLimits::FromResolution(256, 4.00002);
+    EXPECT_NEAR(l.minRadius, 0.015625, 1e-6);
+    EXPECT_NEAR(l.maxRadius, 0.800004, 1e-9);  // min(64·min, 0.2·size)
+    AmbientLimits none = AmbientLimits::FromResolution(0, 10);
+    EXPECT_DOUBLE_EQ(none.minRadius, 1e-5);
+    EXPECT_DOUBLE_EQ(none.maxRadius, 2.0);
+}
+
+TEST(AmbientValueAverage, LogMeanWithAssumedReflectance) {
+    EXPECT_EQ(AveragedAmbientValue(Rgb(1, 1, 1), 0, 10, 3), Rgb(1, 1, 1));
+    EXPECT_EQ(AveragedAmbientValue(Rgb(1, 1, 1), 5, 0, 0), Rgb(1, 1, 1));
+    // One record of brightness e (ln = 1), aw 1, av 1: exp((0 + 1 + ln .5)/2).
+    Rgb v = AveragedAmbientValue(Rgb(1, 1, 1), 1, 1.0, 1);
+    EXPECT_NEAR(v.g, std::exp((1 + std::log(0.5)) / 2), 1e-12);
+    // Zero -av: grey from the records alone.
+    EXPECT_NEAR(AveragedAmbientValue(Rgb(), 1, 1.0, 1).g, std::exp(1 + std::log(0.5)), 1e-12);
+}
+
+}  // namespace
+}  // namespace rt
