@@ -14,17 +14,9 @@ namespace {
 /// before the -dt threshold may stop testing.
 constexpr int kMinShadowTests = 2;
 
-struct Contribution {
-    int source = -1;
-    Vec3 dir;
-    Rgb coef;      // material coefficient for this sample
-    Rgb value;     // unshadowed radiance ⊗ coef
-    double bright = 0;
-};
-
 }  // namespace
 
-Rgb Integrator::SourceValue(TracedRay& sray, int source) {
+Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
     const LightSource& src = sources_[source];
     const Surface& surface = scene_.surfaces[src.surface];
     if (src.shape == LightSource::Shape::Distant) {
@@ -36,9 +28,18 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source) {
         sray.ron = -sray.dir;
         sray.geometricNormal = sray.ron;
         sray.rod = 1.0;
+    } else if (src.parallelogram) {
+        // The sample point lies on the source by construction: no need to
+        // intersect it again.
+        sray.surface = src.surface;
+        sray.rot = distance;
+        sray.rop = sray.org + sray.dir * distance;
+        sray.ron = src.normal;
+        sray.geometricNormal = src.normal;
+        sray.rod = -Dot(sray.dir, src.normal);
     } else {
         auto hit = core_.IntersectSurface(src.surface, sray.org, sray.dir);
-        if (!hit) return Rgb();  // aiming failure: numerically missed the source
+        if (!hit) return Rgb();  // aiming failure: the sample missed the source
         sray.surface = src.surface;
         sray.rot = hit->t;
         sray.rop = hit->point;
@@ -59,35 +60,69 @@ void Integrator::ContinueShadowRay(TracedRay& sray) {
 
 void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, double)>& coef) {
     if (sources_.empty()) return;
-    std::vector<SourceSample> samples;
-    CollectSourceSamples(sources_, ray.rop, ray.rweight, shading_.direct, rng_, samples);
-    if (samples.empty()) return;
+    // Direct() is not re-entered while it runs, but keep one scratch set per
+    // depth so that a future material that shades inside a shadow path
+    // cannot clobber a caller's buffers.
+    if (directScratch_.size() <= static_cast<size_t>(directDepth_)) {
+        directScratch_.resize(directDepth_ + 1);
+    }
+    DirectScratch& scratch = directScratch_[directDepth_];
+    ++directDepth_;
+    struct DepthGuard {
+        int& depth;
+        ~DepthGuard() { --depth; }
+    } guard{directDepth_};
 
-    std::vector<Contribution> contribs;
-    contribs.reserve(samples.size());
-    for (const SourceSample& s : samples) {
-        Contribution c;
+    // Radiance's deterministic partition centres (-dj 0), also for rays of
+    // the indirect calculation: jittering them there converges to the exact
+    // integral, which differs from Radiance's own converged answers by up to
+    // 6 % in the cornell box's penumbrae (0.92 % RMS against its reference
+    // floor instead of 0.61 %); lazyrad's contract is Radiance's answer.
+    CollectSourceSamples(sources_, ray.rop, ray.rweight, shading_.direct, rng_, scratch.samples,
+                         scratch.partitions);
+    if (scratch.samples.empty()) return;
+
+    auto& contribs = scratch.contributions;
+    contribs.clear();
+    for (const SourceSample& s : scratch.samples) {
+        DirectContribution c;
         c.source = s.source;
         c.dir = s.dir;
+        c.distance = s.distance;
         c.coef = coef(s.dir, s.omega);
         if (Bright(c.coef) <= 0.0) continue;
-        TracedRay sray;
-        StartChild(sray, ray, kShadowRay, nullptr);
-        sray.dir = s.dir;
-        sray.rsrc = s.source;
-        c.value = SourceValue(sray, s.source) * c.coef;
+        const LightSource& src = sources_[s.source];
+        if (src.shape == LightSource::Shape::Distant || src.parallelogram) {
+            // The sample lands on the source: its radiance is the material's
+            // colour from the front (spot cones and proximity were checked
+            // when sampling), black from behind.
+            const bool front = src.shape == LightSource::Shape::Distant ||
+                               Dot(s.dir, src.normal) < 0.0;
+            const std::vector<double>& a = scene_.materials[src.material].args;
+            c.value = front ? Rgb(a[0], a[1], a[2]) * c.coef : Rgb();
+        } else {
+            TracedRay sray;
+            StartChild(sray, ray, kShadowRay, nullptr);
+            sray.dir = s.dir;
+            sray.rsrc = s.source;
+            c.value = SourceValue(sray, s.source, s.distance) * c.coef;
+        }
         c.bright = Bright(c.value);
         if (c.bright > 0.0) contribs.push_back(c);
     }
     if (contribs.empty()) return;
     std::stable_sort(contribs.begin(), contribs.end(),
-                     [](const Contribution& a, const Contribution& b) { return a.bright > b.bright; });
+                     [](const DirectContribution& a, const DirectContribution& b) {
+                         return a.bright > b.bright;
+                     });
     const int n = static_cast<int>(contribs.size());
     // Tail sums: tail[k] = Σ_{m >= k} bright_m.
-    std::vector<double> tail(n + 1, 0.0);
+    auto& tail = scratch.tail;
+    tail.assign(n + 1, 0.0);
     for (int k = n - 1; k >= 0; --k) tail[k] = tail[k + 1] + contribs[k].bright;
 
-    const int nshadcheck = static_cast<int>(std::pow(double(n), shading_.direct.certainty) + 0.5);
+    const int nshadcheck =
+        n == 1 ? 1 : static_cast<int>(std::pow(double(n), shading_.direct.certainty) + 0.5);
     const double threshold = shading_.direct.threshold / ray.rweight;
     int nhits = 0;
     double hwt = 0.0;
@@ -97,9 +132,25 @@ void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, dou
         // the minimum number of tests.
         double remaining = k + nshadcheck >= n ? tail[k] : tail[k] - tail[k + nshadcheck];
         if (k >= kMinShadowTests && remaining < threshold * Bright(ray.rcol)) break;
-        Contribution& c = contribs[k];
+        DirectContribution& c = contribs[k];
         LightSource& src = sources_[c.source];
         src.ntests++;
+        ++stats_.shadowRays;
+        if (opaqueShadows_ && !traceShadows_) {
+            // Nothing in this scene transmits light, so any hit before the
+            // source blocks it: an any-hit query is enough.
+            // Stop just short of the sample point on the source itself.
+            const double reach = src.shape == LightSource::Shape::Distant
+                                     ? 0.0
+                                     : c.distance - std::max(kFtiny, 1e-7 * c.distance);
+            if (!core_.Occluded(ray.rop, c.dir, reach)) {
+                ray.rcol += c.value;
+                nhits++;
+                src.nhits++;
+            }
+            hwt += double(src.nhits) / double(src.ntests);
+            continue;
+        }
         TracedRay sray;
         StartChild(sray, ray, kShadowRay, nullptr);
         sray.dir = c.dir;
@@ -134,7 +185,7 @@ void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, dou
     }
     hwt = hwt > kFtiny ? nhits / hwt : 0.5;
     for (; k < n; ++k) {
-        const Contribution& c = contribs[k];
+        const DirectContribution& c = contribs[k];
         const LightSource& src = sources_[c.source];
         double prob = std::min(1.0, hwt * double(src.nhits) / double(src.ntests));
         ray.rcol += c.value * prob;

@@ -49,6 +49,22 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
     };
     Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
     sources_ = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
+
+    // Leave out what the options do not need: no cache without bounces or
+    // with -aa 0 (every hemisphere is then computed afresh).
+    if (ambient.bounces > 0 && ambient.divisions > 0 && ambient.accuracy > kFtiny) {
+        cache_ = std::make_unique<AmbientCache>(
+            scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
+            AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize));
+    }
+    ambientList_.insert(ambient.modifierList.begin(), ambient.modifierList.end());
+
+    opaqueShadows_ = shading.backfaceVisible;
+    for (const Surface& s : scene.surfaces) {
+        if (s.material < 0) continue;
+        MaterialType t = scene.materials[s.material].type;
+        if (IsTransparentType(t) || t == MaterialType::Illum) opaqueShadows_ = false;
+    }
 }
 
 bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned type,
@@ -115,6 +131,7 @@ bool Integrator::HitDistantSource(TracedRay& ray) const {
 }
 
 void Integrator::Trace(TracedRay& ray) {
+    ++stats_.raysTraced;
     ray.rcol = Rgb();
     ray.mcol = Rgb();
     if (auto hit = core_.Intersect(ray.org, ray.dir, ray.rmax)) {
@@ -164,12 +181,6 @@ void Integrator::PassThrough(TracedRay& ray) {
     ray.rcol = child.rcol;
     ray.rmt = ray.rot + child.rmt;
     ray.rxt = ray.rot + child.rxt;
-}
-
-Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& /*ray*/, const Vec3& /*normal*/) {
-    // No indirect calculation yet: every bounce ends in the ambient value
-    // (Radiance's behaviour at -ab 0, and at the last bounce).
-    return coefficient * ambient_.value;
 }
 
 void Integrator::FlipSurface(TracedRay& ray) const {

@@ -11,8 +11,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
+#include <unordered_set>
 #include <vector>
 
+#include "ambient/cache.h"
+#include "ambient/hemisphere.h"
 #include "ambient/options.h"
 #include "core/conventions.h"
 #include "core/diagnostics.h"
@@ -24,6 +29,7 @@
 #include "shading/light_sources.h"
 #include "shading/options.h"
 #include "shading/ray_result.h"
+#include "shading/render_stats.h"
 
 namespace rt {
 
@@ -89,6 +95,9 @@ public:
     }
 
     const std::vector<LightSource>& sources() const { return sources_; }
+    const RenderStats& stats() const { return stats_; }
+    /// The irradiance cache, or null when the options need none (-ab 0, -aa 0).
+    AmbientCache* cache() { return cache_.get(); }
 
 private:
     // integrator.cpp
@@ -106,6 +115,15 @@ private:
     /// The indirect term A ⊗ E/π at a shaded point (multambient()); with no ambient
     /// bounces this is the -av value.
     Rgb Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3& normal);
+    /// The fallback where no bounce is computed: -av, or its -aw average.
+    Rgb AmbientFallback(const Rgb& coefficient) const;
+    /// Samples a fresh hemisphere at the ray's hit point (ambient depth
+    /// raised for the duration). `coefficient` is the material's diffuse
+    /// coefficient; `weight` the record weight. Sample rays get the weights
+    /// Radiance gives them (§4.5): 0.5 of the parent's with the cache, their
+    /// share of the coefficient without.
+    Hemisphere SampleAmbient(const TracedRay& ray, const Rgb& coefficient, double weight);
+    bool AmbientExcluded(const TracedRay& ray) const;
     void Report(const TracedRay& ray);
     RayResult MakeResult(const TracedRay& ray) const;
 
@@ -113,8 +131,9 @@ private:
     /// Radiance's direct(): adds to ray.rcol the contribution of every light
     /// source sample, `coef(ldir, omega)` giving the material's coefficient.
     void Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, double)>& coef);
-    /// Radiance's srcvalue(): radiance arriving along a source ray aimed at `source`.
-    Rgb SourceValue(TracedRay& sray, int source);
+    /// Radiance's srcvalue(): radiance arriving along a source ray aimed at
+    /// `source`, whose sample point lies `distance` away.
+    Rgb SourceValue(TracedRay& sray, int source, double distance);
     /// Shades a shadow ray past an intervening surface (raycont()).
     void ContinueShadowRay(TracedRay& sray);
 
@@ -135,6 +154,31 @@ private:
     std::vector<LightSource> sources_;
     Material lambertian_;   // -i/-I: plastic with reflectance pi
     Rng rng_;
+    std::unique_ptr<AmbientCache> cache_;       // only with -ab > 0 and -aa > 0
+    std::unordered_set<std::string> ambientList_;  // -ae/-ai modifier names
+    int ambientDepth_ = 0;  // nesting of hemisphere computations (Radiance's ambient depth)
+    RenderStats stats_;
+    // Scratch space for Direct(), one set per nesting depth, so that shading
+    // allocates nothing per point.
+    struct DirectContribution {
+        int source = -1;
+        Vec3 dir;
+        double distance = 0;  // to the sample point on the source
+        Rgb coef;      // material coefficient for this sample
+        Rgb value;     // unshadowed radiance ⊗ coef
+        double bright = 0;
+    };
+    struct DirectScratch {
+        std::vector<SourceSample> samples;
+        std::vector<SourcePartition> partitions;
+        std::vector<DirectContribution> contributions;
+        std::vector<double> tail;
+    };
+    std::vector<DirectScratch> directScratch_;
+    /// No surface can pass light (no trans, glass, dielectric, interface or
+    /// illum, and back faces are visible): shadow rays need only any-hit tests.
+    bool opaqueShadows_ = true;
+    int directDepth_ = 0;
     std::function<void(const RayResult&)> trace_;
     bool traceShadows_ = false;
 };

@@ -14,10 +14,7 @@ namespace {
 // [-kMaxParts, kMaxParts] along each size vector (Radiance's MAXSPART).
 constexpr int kMaxParts = 64;
 
-struct Partition {
-    int center[3];
-    int size[3];
-};
+using Partition = SourcePartition;
 
 /// getperpendicular() with Radiance's optional randomisation: a random start
 /// vector and axis order when `randomize`, else the fixed z, y, x scan.
@@ -81,10 +78,13 @@ void SetUpPolygon(LightSource& src, const Surface& s, bool randomFrames, Rng& rn
     double r2 = 0;
     for (const Vec3& v : poly.vertices) r2 = std::fmax(r2, LengthSquared(v - c));
     src.radius = std::sqrt(r2);
-    if (poly.vertices.size() == 4) {  // parallelogram: sample along its own sides
+    if (poly.vertices.size() == 4) {  // a quad: sample along its own sides
         src.size[0] = (poly.vertices[1] - poly.vertices[0]) * 0.5;
         src.size[1] = (poly.vertices[3] - poly.vertices[0]) * 0.5;
         src.size[2] = Vec3();
+        // Only for a true parallelogram do all samples lie on the source.
+        const Vec3 skew = poly.vertices[0] + poly.vertices[2] - poly.vertices[1] - poly.vertices[3];
+        src.parallelogram = Length(skew) <= 1e-9 * src.radius;
     } else {
         SetFlatSize(src, randomFrames, rng);
     }
@@ -307,9 +307,8 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
 
 void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& point,
                           double rayWeight, const DirectOptions& options, Rng& rng,
-                          std::vector<SourceSample>& out) {
-    std::vector<Partition> parts;
-    parts.reserve(kMaxParts);
+                          std::vector<SourceSample>& out, std::vector<SourcePartition>& parts) {
+    out.clear();
     for (int sn = 0; sn < static_cast<int>(sources.size()); ++sn) {
         const LightSource& src = sources[sn];
         if (src.skip) continue;

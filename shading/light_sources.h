@@ -35,6 +35,7 @@ struct LightSource {
     double spotSolidAngle = 0; // 2π(1 - cos(angle/2))
     Vec3 spotAim;              // unit
     double spotFocal = 0;      // focal length behind the source centre
+    bool parallelogram = false;  // flat quad whose samples always land on it
     // Shadow-test statistics used by direct() to estimate untested samples.
     long nhits = 1;
     long ntests = 2;
@@ -58,8 +59,14 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
 
 /// Radiance's nextssamp() + srcray() over all sources: the samples seen from
 /// `point` by a ray of weight `rayWeight`, in source order then partition order.
+/// `out` is cleared first; both vectors are the caller's scratch space, kept
+/// between calls so that shading allocates nothing per point.
+struct SourcePartition {
+    int center[3];
+    int size[3];
+};
 void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& point,
                           double rayWeight, const DirectOptions& options, Rng& rng,
-                          std::vector<SourceSample>& out);
+                          std::vector<SourceSample>& out, std::vector<SourcePartition>& scratch);
 
 }  // namespace rt

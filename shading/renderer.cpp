@@ -25,4 +25,6 @@ void Renderer::SetTraceCallback(std::function<void(const RayResult&)> callback,
     impl_->integrator.SetTraceCallback(std::move(callback), shadowRays);
 }
 
+const RenderStats& Renderer::Stats() const { return impl_->integrator.stats(); }
+
 }  // namespace rt

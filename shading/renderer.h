@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 #include "shading/options.h"
 #include "shading/ray_result.h"
+#include "shading/render_stats.h"
 
 namespace rt {
 
@@ -41,6 +42,9 @@ public:
     /// before parents), for rtrace's -ot/-oT output. `shadowRays` also reports
     /// shadow rays (-oT). Pass an empty function to turn tracing off.
     void SetTraceCallback(std::function<void(const RayResult&)> callback, bool shadowRays);
+
+    /// Counters for the end-of-run report.
+    const RenderStats& Stats() const;
 
 private:
     struct Impl;

@@ -26,7 +26,8 @@ std::vector<SourceSample> Samples(const Scene& scene, Vec3 p, double ds = 0.2, d
     DirectOptions opts;
     opts.sampling = ds;
     std::vector<SourceSample> out;
-    CollectSourceSamples(sources, p, weight, opts, rng, out);
+    std::vector<SourcePartition> scratch;
+    CollectSourceSamples(sources, p, weight, opts, rng, out, scratch);
     return out;
 }
 

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+//
+// The indirect term: Radiance's multambient() (radiance-notes.md §4.1) on top
+// of the lazy irradiance cache in ambient/: interpolate where records are
+// good enough, otherwise sample a new hemisphere and keep it as a record.
+#include <algorithm>
+#include <cmath>
+
+#include "shading/integrator.h"
+
+namespace rt {
+namespace {
+
+/// Radiance's assumed average reflectance: weights ambient sample rays and
+/// makes deeper records count less (AVGREFL).
+constexpr double kAverageReflectance = 0.5;
+
+}  // namespace
+
+bool Integrator::AmbientExcluded(const TracedRay& ray) const {
+    if (ambientList_.empty() && !ambient_.listIsInclude) return false;
+    if (ray.surface < 0 || ray.hitDistant) return false;  // -I: no object to test
+    const bool listed = ambientList_.count(scene_.surfaces[ray.surface].modifierName) > 0;
+    return ambient_.listIsInclude ? !listed : listed;
+}
+
+Rgb Integrator::AmbientFallback(const Rgb& coefficient) const {
+    if (!cache_) return coefficient * ambient_.value;
+    return coefficient * AveragedAmbientValue(ambient_.value, ambient_.valueWeight,
+                                              cache_->logBrightSum(), cache_->logBrightCount());
+}
+
+Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficient,
+                                     double weight) {
+    const bool caching = cache_ != nullptr;
+    HemisphereOptions options;
+    options.divisions = ambient_.divisions;
+    options.superSamples = ambient_.superSamples;
+    options.weight = weight;
+    options.caching = caching;
+    const DivisionCounts counts = HemisphereDivisions(options);
+    // With the cache every sample ray weighs half its parent (so Russian
+    // roulette rarely triggers); without it, each carries its true share of
+    // the coefficient, and is never dropped: the sample count was already cut
+    // to what the weight deserves and -ab bounds the recursion (Radiance drops
+    // such samples and comes out biased low).
+    const Rgb sampleCoef = caching ? Rgb::Grey(kAverageReflectance)
+                                   : coefficient / static_cast<double>(counts.total());
+    const Vec3 point = ray.rop;
+    ++ambientDepth_;
+    ++stats_.hemispheres;
+    Hemisphere h = SampleHemisphere(ray.ron, options, rng_, [&](const Vec3& dir)
+                                        -> std::optional<AmbientSample> {
+        TracedRay child;
+        if (caching) {
+            if (!StartChild(child, ray, kAmbientRay, &sampleCoef)) return std::nullopt;
+        } else {
+            // No Russian roulette: set the weight by hand, keep only -lr's cap.
+            StartChild(child, ray, kAmbientRay, nullptr);
+            child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
+            child.rcoef = sampleCoef;
+            const int lr = shading_.limits.reflections;
+            if (lr != 0 && child.rlvl > std::abs(lr)) return std::nullopt;
+        }
+        child.org = point;
+        child.dir = dir;
+        Trace(child);
+        const double dist = child.EffectiveDistance();
+        if (!(dist > kFtiny)) return std::nullopt;
+        // The sample's radiance, including any Russian-roulette boost the
+        // child's coefficient received over the nominal one.
+        const double nominal = Intens(sampleCoef);
+        const double boost = nominal > 0 ? Intens(child.rcoef) / nominal : 1.0;
+        return AmbientSample{child.rcol * boost, dist};
+    });
+    --ambientDepth_;
+    return h;
+}
+
+Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3& normal) {
+    if (ambient_.divisions <= 0 || ambientDepth_ >= ambient_.bounces || AmbientExcluded(ray) ||
+        Bright(coefficient) <= kFtiny) {
+        return AmbientFallback(coefficient);
+    }
+    if (!cache_) {
+        // -aa 0: a fresh hemisphere for every shading point, sized by the
+        // ray's weight so that sample rays stay near -lw.
+        double weight = ray.rweight;
+        const double lw = shading_.limits.weight;
+        if (lw > 0) {
+            weight = std::min(weight, 0.8 * Intens(coefficient) * ray.rweight /
+                                          (std::max(ambient_.divisions, 1) * lw));
+        }
+        Hemisphere h = SampleAmbient(ray, coefficient, weight);
+        if (h.raysTraced == 0) return AmbientFallback(coefficient);
+        return coefficient * h.value;
+    }
+    AmbientQuery query;
+    query.point = ray.rop;
+    query.normal = ray.ron;
+    query.shadingNormal = normal;
+    query.level = ambientDepth_;
+    query.rayWeight = ray.rweight;
+    ++stats_.ambientLookups;
+    if (auto value = cache_->Interpolate(query)) {
+        ++stats_.ambientHits;
+        return coefficient * *value;
+    }
+    // A new record at this level: weight 0.5^level, or about the ray's own
+    // weight when the ray matters much less than that (§4.4).
+    double weight = std::pow(kAverageReflectance, ambientDepth_);
+    if (ray.rweight < 0.1 * weight) weight = 1.25 * ray.rweight;
+    const int level = ambientDepth_;
+    Hemisphere h = SampleAmbient(ray, coefficient, weight);
+    if (h.raysTraced == 0) return AmbientFallback(coefficient);
+    if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
+        if (cache_->Add(*record)) {
+            if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {
+                stats_.recordsPerLevel.resize(level + 1);
+            }
+            ++stats_.recordsPerLevel[level];
+        }
+    }
+    // An incomplete hemisphere still gives a usable value; it is just not
+    // kept (Radiance's soft failure).
+    return coefficient * h.value;
+}
+
+}  // namespace rt

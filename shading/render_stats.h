@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+//
+// Counters a Renderer keeps for rtrace's end-of-run report (-t): what the
+// ambient cache did and how many rays were traced.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace rt {
+
+struct RenderStats {
+    std::uint64_t raysTraced = 0;        // every ray sent into the scene (not shadow rays)
+    std::uint64_t shadowRays = 0;        // shadow rays actually tested
+    std::uint64_t ambientLookups = 0;    // cache queries
+    std::uint64_t ambientHits = 0;       // queries answered by interpolation
+    std::uint64_t hemispheres = 0;       // hemispheres sampled (records made or not)
+    std::vector<std::uint64_t> recordsPerLevel;  // records created, by ambient level
+    std::uint64_t recordsLoaded = 0;     // records added from outside (ambient files)
+};
+
+}  // namespace rt
