@@ -48,6 +48,7 @@ struct RtraceOptions {
     bool immediateIrradiance = false;  // -I (Radiance's imm_irrad)
     std::string errorFile;         // -e: append messages here; empty = stderr
     int processes = 1;             // -n
+    int reportSeconds = 0;         // -t: progress interval (lazyrad extension, as rpict's -t)
 
     /// -ti/-tI (include) or -te/-tE (exclude) modifier names for trace output;
     /// the first use of the other kind restarts the list (Radiance's rule).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rtrace/run.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -159,6 +160,12 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
             writer.Flush();
         }
 
+        // -t: progress every reportSeconds, checked cheaply every 64 records.
+        using Clock = std::chrono::steady_clock;
+        const auto start = Clock::now();
+        auto nextReport = start + std::chrono::seconds(std::max(opt.reportSeconds, 0));
+        auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
         RayReader reader(in, opt.inputFormat);
         Vec3 lastOrigin, lastDirection;
         const bool immediate = opt.immediateIrradiance;
@@ -185,10 +192,26 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
                 }
             }
             ++index;
+            if (opt.reportSeconds > 0 && index % 64 == 0 && Clock::now() >= nextReport) {
+                char line[128];
+                std::snprintf(line, sizeof line, "%llu rays after %.1f s",
+                              static_cast<unsigned long long>(index), seconds());
+                *msg << prog << ": " << line << '\n';
+                msg->flush();
+                nextReport = Clock::now() + std::chrono::seconds(opt.reportSeconds);
+            }
             if (counting && --remaining == 0) break;
         }
         if (!writer.Flush()) ThrowSystemError("write error");
         if (counting && remaining > 0) warn("unexpected EOF on input");
+        if (opt.reportSeconds > 0) {
+            std::string summary = evaluator->Summary();
+            char tail[96];
+            std::snprintf(tail, sizeof tail, "%s%llu input rays in %.2f s", summary.empty() ? "" : ", ",
+                          static_cast<unsigned long long>(index), seconds());
+            *msg << prog << ": " << summary << tail << '\n';
+            msg->flush();
+        }
     } catch (const Error& e) {
         // Results computed before the problem are delivered first.
         writer.Flush();

@@ -43,6 +43,9 @@ public:
                                  std::uint64_t rayIndex) = 0;
     virtual void SetTraceCallback(std::function<void(const RayResult&)> callback,
                                   bool shadowRays) = 0;
+    /// One line on what the renderer did (records per level, lookups, hit
+    /// rate, rays traced), for -t and -e; empty if there is nothing to say.
+    virtual std::string Summary() const { return {}; }
 };
 
 /// Builds the evaluator for `sceneFiles` with the effective options (seed

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rtrace/scene_evaluator.h"
 
+#include <cstdio>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 #include "raycore/raycore.h"
@@ -25,6 +27,26 @@ public:
     void SetTraceCallback(std::function<void(const RayResult&)> callback,
                           bool shadowRays) override {
         renderer_.SetTraceCallback(std::move(callback), shadowRays);
+    }
+    std::string Summary() const override {
+        const RenderStats& s = renderer_.Stats();
+        std::string out = "records per level";
+        if (s.recordsPerLevel.empty()) out += " 0";
+        for (size_t i = 0; i < s.recordsPerLevel.size(); ++i) {
+            // append(), not "x" + std::string: GCC 12 warns falsely on the latter (bug 105329).
+            out.append(i ? "/" : " ");
+            out.append(std::to_string(s.recordsPerLevel[i]));
+        }
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      ", %llu lookups, %.1f%% interpolated, %llu hemispheres, %llu rays traced"
+                      " + %llu shadow rays",
+                      static_cast<unsigned long long>(s.ambientLookups),
+                      s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups) : 0.0,
+                      static_cast<unsigned long long>(s.hemispheres),
+                      static_cast<unsigned long long>(s.raysTraced),
+                      static_cast<unsigned long long>(s.shadowRays));
+        return out + buf;
     }
 
 private:
