@@ -58,7 +58,7 @@ void Integrator::ContinueShadowRay(TracedRay& sray) {
     Report(sray);
 }
 
-void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, double)>& coef) {
+void Integrator::Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) {
     if (sources_.empty()) return;
     // Direct() is not re-entered while it runs, but keep one scratch set per
     // depth so that a future material that shades inside a shadow path
@@ -78,8 +78,8 @@ void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, dou
     // integral, which differs from Radiance's own converged answers by up to
     // 6 % in the cornell box's penumbrae (0.92 % RMS against its reference
     // floor instead of 0.61 %); lazyrad's contract is Radiance's answer.
-    CollectSourceSamples(sources_, ray.rop, ray.rweight, shading_.direct, rng_, scratch.samples,
-                         scratch.partitions);
+    CollectSourceSamples(sources_, ray.rop, ray.sourceWeight, shading_.direct, rng_,
+                         scratch.samples, scratch.partitions);
     if (scratch.samples.empty()) return;
 
     auto& contribs = scratch.contributions;
@@ -111,10 +111,12 @@ void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, dou
         if (c.bright > 0.0) contribs.push_back(c);
     }
     if (contribs.empty()) return;
-    std::stable_sort(contribs.begin(), contribs.end(),
-                     [](const DirectContribution& a, const DirectContribution& b) {
-                         return a.bright > b.bright;
-                     });
+    if (contribs.size() > 1) {
+        std::stable_sort(contribs.begin(), contribs.end(),
+                         [](const DirectContribution& a, const DirectContribution& b) {
+                             return a.bright > b.bright;
+                         });
+    }
     const int n = static_cast<int>(contribs.size());
     // Tail sums: tail[k] = Σ_{m >= k} bright_m.
     auto& tail = scratch.tail;
@@ -122,7 +124,9 @@ void Integrator::Direct(TracedRay& ray, const std::function<Rgb(const Vec3&, dou
     for (int k = n - 1; k >= 0; --k) tail[k] = tail[k + 1] + contribs[k].bright;
 
     const int nshadcheck =
-        n == 1 ? 1 : static_cast<int>(std::pow(double(n), shading_.direct.certainty) + 0.5);
+        n < static_cast<int>(shadowCheckCounts_.size())
+            ? shadowCheckCounts_[n]
+            : static_cast<int>(std::pow(double(n), shading_.direct.certainty) + 0.5);
     const double threshold = shading_.direct.threshold / ray.rweight;
     int nhits = 0;
     double hwt = 0.0;

@@ -59,6 +59,11 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
     }
     ambientList_.insert(ambient.modifierList.begin(), ambient.modifierList.end());
 
+    shadowCheckCounts_.resize(257);
+    for (size_t n = 0; n < shadowCheckCounts_.size(); ++n) {
+        shadowCheckCounts_[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
+    }
+
     opaqueShadows_ = shading.backfaceVisible;
     for (const Surface& s : scene.surfaces) {
         if (s.material < 0) continue;
@@ -78,6 +83,7 @@ bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned 
     child.rcoef = coef ? *coef : Rgb(1, 1, 1);
     double w = coef ? std::fmin(1.0, Intens(*coef)) : 1.0;
     child.rweight = parent.rweight * w;
+    child.sourceWeight = parent.sourceWeight * w;
     if (type & kReflectionTypes) {
         child.rmax = 0;
         child.rsrc = type == kShadowRay ? parent.rsrc : -1;

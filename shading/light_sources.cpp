@@ -326,7 +326,8 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
                     vpos[i] = options.jitter * (1.0 - 2.0 * x) * part.size[i] / kMaxParts;
                 }
             }
-            for (int i = 0; i < 3; ++i) vpos[i] += static_cast<double>(part.center[i]) / kMaxParts;
+            constexpr double kInvParts = 1.0 / kMaxParts;
+            for (int i = 0; i < 3; ++i) vpos[i] += part.center[i] * kInvParts;
             if (src.circular && (parts.size() > 1 || options.jitter > 0.7)) {
                 // Squeeze the square's samples into the disc (or the cube's into
                 // the ball) so they do not miss a round source.
@@ -347,12 +348,12 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
                 }
                 for (int i = 0; i < 3; ++i) vpos[i] *= trim[i];
             }
-            Vec3 dir = src.location + src.size[0] * vpos[0] + src.size[1] * vpos[1] +
-                       src.size[2] * vpos[2];
+            Vec3 dir = src.location + src.size[0] * vpos[0] + src.size[1] * vpos[1];
+            if (!flat) dir += src.size[2] * vpos[2];
             if (!distant) dir -= point;
-            double d = Length(dir);
+            const double d = Length(dir);
             if (d == 0) continue;  // at the source
-            dir = dir / d;
+            dir *= 1.0 / d;
 
             double omega;
             if (flat) {

@@ -204,7 +204,7 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
 
     // Direct light (Radiance's dirnorm()).
     const bool fresnelOnDiffuse = pure && rspec >= kFresnelThreshold;
-    Direct(ray, [&](const Vec3& ldir, double omega) {
+    auto coefficient = [&](const Vec3& ldir, double omega) {
         Rgb cval;
         double ldot = Dot(pnorm, ldir);
         if (ldot < 0.0 ? trans <= kFtiny : trans >= 1.0 - kFtiny) return cval;  // wrong side
@@ -232,7 +232,8 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
             if (f > kFtiny) cval += mcolor * (f * tspec * omega * std::sqrt(-ldot / pdot));
         }
         return cval;
-    });
+    };
+    Direct(ray, coefficient);
 }
 
 void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
