@@ -244,6 +244,8 @@ constexpr OptionRow kOptionRows[] = {
         "parsed; runs one process (warning)"),
     Int("-x", "x resolution / flush interval", [](RtraceOptions& o) -> int& { return o.xResolution; }),
     Int("-y", "y resolution", [](RtraceOptions& o) -> int& { return o.yResolution; }),
+    Int("-seed", "random seed", [](RtraceOptions& o) -> int& { return o.seed; },
+        "lazyrad extension: runs are repeatable; change the seed for another sample"),
     Int("-t", "progress report interval in seconds", [](RtraceOptions& o) -> int& { return o.reportSeconds; },
         "lazyrad extension (rpict's -t): progress on stderr, summary at exit"),
     Toggle("-ld", "limit ray distance to |direction|", [](RtraceOptions& o) -> bool& { return o.limitDistance; }),

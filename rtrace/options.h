@@ -49,6 +49,7 @@ struct RtraceOptions {
     std::string errorFile;         // -e: append messages here; empty = stderr
     int processes = 1;             // -n
     int reportSeconds = 0;         // -t: progress interval (lazyrad extension, as rpict's -t)
+    int seed = 0;                  // -seed: random seed (lazyrad extension; Radiance uses the clock)
 
     /// -ti/-tI (include) or -te/-tE (exclude) modifier names for trace output;
     /// the first use of the other kind restarts the list (Radiance's rule).

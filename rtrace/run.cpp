@@ -127,9 +127,10 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
     try {
         WarnUnimplemented(opt, warn);
         const std::time_t now = env.clock();
-        // -u+: a new random sequence each run, as Radiance's srandom(time(0));
-        // -u-: repeatable.
-        opt.shading.seed = opt.shading.uncorrelated ? static_cast<unsigned long long>(now) : 0;
+        // Repeatable runs: the random streams come from -seed and each ray's
+        // position in the input, never the clock (Radiance seeds -u+ runs
+        // with time(0), so two of its runs differ).
+        opt.shading.seed = static_cast<unsigned long long>(static_cast<unsigned>(opt.seed));
 
         const OutputSpec spec = ParseOutputSpec(opt, warn);
         if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");

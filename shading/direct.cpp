@@ -40,12 +40,7 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
     } else {
         auto hit = core_.IntersectSurface(src.surface, sray.org, sray.dir);
         if (!hit) return Rgb();  // aiming failure: the sample missed the source
-        sray.surface = src.surface;
-        sray.rot = hit->t;
-        sray.rop = hit->point;
-        sray.ron = hit->normal;
-        sray.geometricNormal = hit->normal;
-        sray.rod = -Dot(sray.dir, hit->normal);
+        sray.SetHit(*hit);
     }
     sray.rcol = Rgb();
     ShadeLight(sray, scene_.materials[surface.material]);
@@ -166,13 +161,7 @@ void Integrator::Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> co
         // followed so that it can be reported, as Radiance's SFOLLOW flag does.
         if (auto hit = core_.Intersect(sray.org, sray.dir, 0.0);
             hit && (hit->surface != src.surface || traceShadows_)) {
-            sray.surface = hit->surface;
-            sray.rot = hit->t;
-            sray.rop = hit->point;
-            sray.ron = hit->normal;
-            sray.geometricNormal = hit->normal;
-            sray.rod = -Dot(sray.dir, hit->normal);
-            sray.rmt = sray.rxt = hit->t;
+            sray.SetHit(*hit);
             ContinueShadowRay(sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;

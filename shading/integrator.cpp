@@ -141,13 +141,7 @@ void Integrator::Trace(TracedRay& ray) {
     ray.rcol = Rgb();
     ray.mcol = Rgb();
     if (auto hit = core_.Intersect(ray.org, ray.dir, ray.rmax)) {
-        ray.surface = hit->surface;
-        ray.rot = hit->t;
-        ray.rop = hit->point;
-        ray.ron = hit->normal;
-        ray.geometricNormal = hit->normal;
-        ray.rod = -Dot(ray.dir, hit->normal);
-        ray.rmt = ray.rxt = hit->t;
+        ray.SetHit(*hit);
         Shade(ray);
     } else if (ray.rmax > 0) {
         // -ld: nothing before the clipping distance; no distant-source test.
@@ -230,7 +224,9 @@ RayResult Integrator::MakeResult(const TracedRay& ray) const {
 
 RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
                                  std::uint64_t rayIndex) {
-    rng_.Seed(MixSeed(shading_.seed, rayIndex));
+    // -u+: a stream per input position, so identical rays are independent
+    // samples; -u-: the same stream for every ray (correlated sampling).
+    rng_.Seed(MixSeed(shading_.seed, shading_.uncorrelated ? rayIndex : 0));
     TracedRay ray;
     ray.org = org;
     ray.dir = dir;

@@ -85,6 +85,15 @@ struct TracedRay {
     double EffectiveDistance() const {
         return Bright(mcol) > 0.5 * Bright(rcol) ? rmt : rxt;
     }
+
+    /// Records where the ray hit a surface (before any shading flips).
+    void SetHit(const Hit& hit) {
+        surface = hit.surface;
+        rot = rmt = rxt = hit.t;
+        rop = hit.point;
+        ron = geometricNormal = hit.normal;
+        rod = -Dot(dir, hit.normal);
+    }
 };
 
 class Integrator {

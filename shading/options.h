@@ -49,8 +49,9 @@ struct ShadingOptions {
     MediumOptions medium;
     bool backfaceVisible = true;        // -bv
     IrradianceMode irradiance = IrradianceMode::Off;
-    bool uncorrelated = true;           // -u (false: repeatable, seeded with 0)
-    unsigned long long seed = 0;        // base seed; rtrace sets it from time(0) when -u+
+    bool uncorrelated = true;           // -u: every ray its own random stream (false: one
+                                        // stream for all rays, correlated sampling)
+    unsigned long long seed = 0;        // base seed (-seed); runs with equal seeds are identical
 };
 
 }  // namespace rt

@@ -360,7 +360,11 @@ int InChild(F body) {
     return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
 }
 
-void CheckReadOnlyDirectoryAndFile(const TempDir& dir, const std::string& existing) {
+// `original` is read by the caller: the check may run as "nobody", who need not
+// be able to read the source tree (a clone under a 0700 directory, say).
+template <typename Bytes>
+void CheckReadOnlyDirectoryAndFile(const TempDir& dir, const std::string& existing,
+                                   const Bytes& original) {
     try {
         SharedAmbientFile f(dir.File("new.amb"), Params(), {});
         ADD_FAILURE() << "created a file in a read-only directory";
@@ -377,22 +381,23 @@ void CheckReadOnlyDirectoryAndFile(const TempDir& dir, const std::string& existi
     ASSERT_EQ(w.messages.size(), 1u);
     EXPECT_NE(w.messages[0].find("read-only"), std::string::npos);
     EXPECT_TRUE(f.Sync(std::vector<AmbientRecord>{Tagged(1, 1)}).empty());
-    EXPECT_EQ(ReadBytes(existing), ReadBytes(DataPath("cornell_radiance54.amb")));
+    EXPECT_EQ(ReadBytes(existing), original);
 }
 
 TEST(SharedAmbientFile, ReadOnlyDirectoryAndFile) {
     TempDir dir;
     const std::string existing = dir.File("frozen.amb");
-    testing::WriteBytes(existing, ReadBytes(DataPath("cornell_radiance54.amb")));
+    const auto original = ReadBytes(DataPath("cornell_radiance54.amb"));
+    testing::WriteBytes(existing, original);
     ASSERT_EQ(chmod(existing.c_str(), 0444), 0);
     ASSERT_EQ(chmod(dir.Path().c_str(), 0555), 0);
     if (geteuid() != 0) {
-        CheckReadOnlyDirectoryAndFile(dir, existing);
+        CheckReadOnlyDirectoryAndFile(dir, existing, original);
     } else {
         // Root ignores permissions: run the check as "nobody" in a child process.
         const int rc = InChild([&] {
             if (setgid(65534) != 0 || setuid(65534) != 0) return 77;
-            CheckReadOnlyDirectoryAndFile(dir, existing);
+            CheckReadOnlyDirectoryAndFile(dir, existing, original);
             return ::testing::Test::HasFailure() ? 1 : 0;
         });
         if (rc == 77) GTEST_SKIP() << "cannot drop root privileges";

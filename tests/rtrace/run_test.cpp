@@ -122,9 +122,13 @@ TEST(RtraceRun, PassesNormalisedDirectionsLimitsAndSeeds) {
     EXPECT_EQ(s.options.shading.seed, 0u);
     EXPECT_FALSE(s.options.shading.uncorrelated);
 
+    // The seed comes from -seed, never the clock: runs are repeatable.
     RunWith({"-h", "x.rad"}, "0 0 0 0 0 4\n", &s, 12345);
     EXPECT_EQ(s.rmax.back(), 0);
-    EXPECT_EQ(s.options.shading.seed, 12345u);
+    EXPECT_EQ(s.options.shading.seed, 0u);
+    EXPECT_TRUE(s.options.shading.uncorrelated);
+    RunWith({"-h", "-seed", "7", "x.rad"}, "0 0 0 0 0 4\n", &s, 12345);
+    EXPECT_EQ(s.options.shading.seed, 7u);
 }
 
 TEST(RtraceRun, FlushRequestRepeatsPreviousRay) {
