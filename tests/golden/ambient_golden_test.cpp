@@ -108,7 +108,7 @@ namespace {
 
 /// Same input and options give the same output on every run; -seed changes
 /// the sample; with -u+ the same ray twice gives two independent samples,
-/// with -u- (one random stream for all rays) the same one.
+/// with -u- (one random stream for all rays) the same sample.
 TEST(Reproducibility, RunsRepeatAndIdenticalRaysAreIndependent) {
     const std::string opts =
         "-I -ab 1 -ad 64 -as 0 -aa 0 " + kSource + "/scenes/cornell/cornell.rad";
@@ -124,7 +124,11 @@ TEST(Reproducibility, RunsRepeatAndIdenticalRaysAreIndependent) {
     EXPECT_NE(independent[0], independent[1]);
     auto correlated = RunRows("-u- " + opts, twice);
     ASSERT_EQ(correlated.size(), 2u);
-    EXPECT_EQ(correlated[0], correlated[1]);
+    // Equal up to Radiance's shadow-test statistics (-dt/-dc), which carry
+    // over from one ray to the next.
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(correlated[0][c], correlated[1][c], 1e-5 * correlated[0][c]);
+    // Independent samples differ by far more than that.
+    EXPECT_GT(std::fabs(independent[0][1] - independent[1][1]), 1e-3 * independent[0][1]);
 }
 
 }  // namespace
