@@ -29,6 +29,7 @@ AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accur
 
 bool AmbientCache::Add(const AmbientRecord& record) {
     if (!IsUsable(record)) return false;
+    std::unique_lock lock(mutex_);
     const auto id = static_cast<std::uint32_t>(records_.size());
     records_.push_back(record);
     // A record can only be accepted within a·r1 of its position (ε >= |Δ|/r1).
@@ -48,6 +49,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q) const {
     const double behindTolerance = limits_.minRadius * a + 0.001;
     Rgb sum;
     double weightSum = 0;
+    std::shared_lock lock(mutex_);
     index_.ForEachContaining(q.point, [&](std::uint32_t id) {
         const AmbientRecord& r = records_[id];
         // A record answers only queries of its own bounce depth: its value
@@ -83,6 +85,21 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q) const {
     });
     if (weightSum <= kFtiny) return std::nullopt;
     return sum / weightSum;
+}
+
+std::size_t AmbientCache::size() const {
+    std::shared_lock lock(mutex_);
+    return records_.size();
+}
+
+std::vector<AmbientRecord> AmbientCache::Records() const {
+    std::shared_lock lock(mutex_);
+    return records_;
+}
+
+AmbientCache::LogBrightSum AmbientCache::logBright() const {
+    std::shared_lock lock(mutex_);
+    return {logBrightSum_, logBrightCount_};
 }
 
 Rgb AveragedAmbientValue(const Rgb& av, int valueWeight, double logBrightSum, int logBrightCount) {

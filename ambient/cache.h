@@ -6,12 +6,14 @@
 // sumambient()). Records read from Radiance 5 files carry two radii and a
 // u-axis; the distance term then uses the record's ellipse (§4.3).
 //
-// Not thread-safe for writers; concurrent Interpolate() calls are safe while
-// no Add() runs.
+// Thread-safe: any number of threads may Interpolate() and Add() at once
+// (a reader-writer lock; lookups far outnumber insertions).
 #pragma once
 
 #include <cstddef>
+#include <mutex>
 #include <optional>
+#include <shared_mutex>
 #include <vector>
 
 #include "ambient/limits.h"
@@ -47,16 +49,21 @@ public:
     /// negative: a record whose extrapolation factor drops below 0.05 is not used.
     std::optional<Rgb> Interpolate(const AmbientQuery& query) const;
 
-    std::size_t size() const { return records_.size(); }
-    const std::vector<AmbientRecord>& records() const { return records_; }
+    std::size_t size() const;
+    /// A copy of every record, in insertion order.
+    std::vector<AmbientRecord> Records() const;
     const AmbientLimits& limits() const { return limits_; }
 
     /// Σ ln(bright(value)) and count over records with bright > 1e-6, for the
     /// -aw running average (Radiance's avsum/navsum).
-    double logBrightSum() const { return logBrightSum_; }
-    int logBrightCount() const { return logBrightCount_; }
+    struct LogBrightSum {
+        double sum = 0;
+        int count = 0;
+    };
+    LogBrightSum logBright() const;
 
 private:
+    mutable std::shared_mutex mutex_;
     double accuracy_;
     AmbientLimits limits_;
     SphereOctree index_;

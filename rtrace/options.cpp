@@ -241,7 +241,7 @@ constexpr std::string_view kNoMedium = "parsed; participating media not implemen
 constexpr OptionRow kOptionRows[] = {
     // rtrace-specific (rtmain.c)
     Int("-n", "number of rendering processes", [](RtraceOptions& o) -> int& { return o.processes; },
-        "parsed; runs one process (warning)"),
+        "yes: N threads sharing one cache and the ambient file (max 64)"),
     Int("-x", "x resolution / flush interval", [](RtraceOptions& o) -> int& { return o.xResolution; }),
     Int("-y", "y resolution", [](RtraceOptions& o) -> int& { return o.yResolution; }),
     Int("-seed", "random seed", [](RtraceOptions& o) -> int& { return o.seed; },
@@ -544,6 +544,7 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
         int used = ApplyRow(*row, o, args, i, warn);
         if (used < 0) CommandLineError(arg);
         if (row->info.name == "-n" && o.processes <= 0) ThrowUserError("bad number of processes");
+        if (row->info.name == "-n" && o.processes > 64) o.processes = 64;  // Radiance's cap
         i += static_cast<std::size_t>(used);
     }
     if (o.processes > 1 && !o.persistFile.empty())

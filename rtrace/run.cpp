@@ -39,9 +39,6 @@ void ReportError(std::ostream& msg, const std::string& prog, const Error& e) {
 /// Warnings about options that are accepted but do nothing yet, where a user
 /// would otherwise believe they had an effect.
 void WarnUnimplemented(const RtraceOptions& o, const WarningSink& warn) {
-    if (o.processes > 1)
-        warn("multiprocessing (-n " + std::to_string(o.processes) +
-             ") not implemented yet, using one process");
     if (!o.persistFile.empty())
         warn("persistent mode (-P/-PP) not implemented, processing input once");
     if (!o.photonMaps.empty()) warn("photon mapping (-ap) not implemented, option ignored");
@@ -170,26 +167,47 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
         RayReader reader(in, opt.inputFormat);
         Vec3 lastOrigin, lastDirection;
         const bool immediate = opt.immediateIrradiance;
-        while (auto ray = reader.Next()) {
-            // hypot: no overflow for components beyond 1e154, unlike sqrt(dot).
-            const Vec3& d = ray->direction;
-            const double length = std::hypot(d.x, d.y, d.z);
-            if (length == 0) {
-                // A flush request: always answered with a record, then the
-                // output is flushed and the -x countdown starts again.
-                writer.WriteRecord(spec.fields, BogusRecord(lastOrigin, lastDirection));
-                if (!writer.Flush()) ThrowSystemError("write error");
-                nextFlush = flushInterval;
-            } else {
-                const Vec3 dir = ray->direction / length;
-                const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
-                RayResult r = evaluator->TraceInput(ray->origin, dir, rmax, index);
+        // Rays are evaluated in batches so that -n threads can share them;
+        // one process (or trace output, which Radiance never parallelises)
+        // evaluates them one at a time, as they arrive.
+        const int threads = spec.trace ? 1 : std::max(1, opt.processes);
+        const std::size_t batchLimit = threads > 1 ? 1024 * static_cast<std::size_t>(threads) : 1;
+        std::vector<RayQuery> pending;
+        std::vector<RayResult> results;
+        auto evaluatePending = [&] {
+            if (pending.empty()) return;
+            results.resize(pending.size());
+            evaluator->TraceBatch(pending, results);
+            for (const RayResult& r : results) {
                 lastOrigin = r.origin;
                 lastDirection = r.direction;
                 writer.WriteRecord(spec.fields, r);
                 if (--nextFlush == 0) {
                     if (!writer.Flush()) ThrowSystemError("write error");
                     nextFlush = flushInterval;
+                }
+            }
+            pending.clear();
+        };
+        while (auto ray = reader.Next()) {
+            // hypot: no overflow for components beyond 1e154, unlike sqrt(dot).
+            const Vec3& d = ray->direction;
+            const double length = std::hypot(d.x, d.y, d.z);
+            if (length == 0) {
+                // A flush request: everything before it is answered first,
+                // then its own record, then the output is flushed and the -x
+                // countdown starts again.
+                evaluatePending();
+                writer.WriteRecord(spec.fields, BogusRecord(lastOrigin, lastDirection));
+                if (!writer.Flush()) ThrowSystemError("write error");
+                nextFlush = flushInterval;
+            } else {
+                const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
+                pending.push_back({ray->origin, ray->direction / length, rmax, index});
+                // A batch ends where a -x flush falls, so output is as prompt.
+                if (pending.size() >= batchLimit ||
+                    (nextFlush > 0 && pending.size() >= static_cast<std::size_t>(nextFlush))) {
+                    evaluatePending();
                 }
             }
             ++index;
@@ -203,6 +221,8 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
             }
             if (counting && --remaining == 0) break;
         }
+        evaluatePending();
+        evaluator->Finish();
         if (!writer.Flush()) ThrowSystemError("write error");
         if (counting && remaining > 0) warn("unexpected EOF on input");
         if (opt.reportSeconds > 0) {

@@ -32,11 +32,26 @@
 
 namespace rt {
 
+/// One input ray, as TraceBatch takes it.
+struct RayQuery {
+    Vec3 org;
+    Vec3 dir;            // unit
+    double rmax = 0;     // > 0 limits the ray (-ld)
+    std::uint64_t index = 0;  // 0-based position in the input
+};
+
 /// What Run needs from the renderer: shading::Renderer's TraceInput and
 /// SetTraceCallback behind an interface.
 class RayEvaluator {
 public:
     virtual ~RayEvaluator() = default;
+    /// Evaluates `rays` (possibly in parallel, -n); out[i] answers rays[i].
+    virtual void TraceBatch(std::span<const RayQuery> rays, std::span<RayResult> out) {
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            out[i] = TraceInput(rays[i].org, rays[i].dir, rays[i].rmax, rays[i].index);
+    }
+    /// Called once after the last ray: final ambient-file sync. May throw rt::Error.
+    virtual void Finish() {}
     /// `dir` unit; `rmax` > 0 limits the ray (-ld), 0 = unlimited; `rayIndex`
     /// is the 0-based position of the record in the input.
     virtual RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax,

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "rtrace/scene_evaluator.h"
 
+#include <atomic>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <thread>
 
+#include "ambfiles/shared_file.h"
 #include "raycore/raycore.h"
 #include "scene/loader.h"
 #include "shading/renderer.h"
@@ -13,23 +18,102 @@
 namespace rt {
 namespace {
 
+/// The ambient file's header records the effective ambient options, as
+/// Radiance's initambfile() does.
+AmbientHeaderParams HeaderParams(const std::vector<std::string>& sceneFiles,
+                                 const RtraceOptions& options) {
+    AmbientHeaderParams p;
+    p.programName = "rtrace";
+    p.ambientValue = options.ambient.value;
+    p.valueWeight = options.ambient.valueWeight;
+    p.bounces = options.ambient.bounces;
+    p.accuracy = options.ambient.accuracy;
+    p.divisions = options.ambient.divisions;
+    p.superSamples = options.ambient.superSamples;
+    p.resolution = options.ambient.resolution;
+    for (const std::string& f : sceneFiles) {
+        if (!p.octreeName.empty()) p.octreeName.append(" ");
+        p.octreeName.append(f);
+    }
+    p.software = std::string(kVersionString);
+    p.captureTime = std::time(nullptr);
+    return p;
+}
+
+/// Scene, ray core and one Renderer per thread (-n). With the cache, all
+/// renderers share one in-memory AmbientCache, so a record made by one
+/// thread serves the others at once; with -af the cache is also kept in sync
+/// with the file (and so with any other process using it).
 class SceneEvaluator final : public RayEvaluator {
 public:
-    SceneEvaluator(Scene scene, const RtraceOptions& options, const WarningSink& warn)
-        : scene_(std::move(scene)),
-          core_(scene_),
-          renderer_(scene_, core_, options.shading, options.ambient, warn) {}
+    SceneEvaluator(Scene scene, const std::vector<std::string>& sceneFiles,
+                   const RtraceOptions& options, const WarningSink& warn)
+        : scene_(std::move(scene)), core_(scene_), warn_(warn) {
+        cache_ = Renderer::MakeCache(scene_, options.ambient);
+        const int threads = std::max(1, options.processes);
+        for (int i = 0; i < threads; ++i) {
+            // Set-up warnings ("no light sources found") once, not per thread.
+            renderers_.push_back(std::make_unique<Renderer>(
+                scene_, core_, options.shading, options.ambient, i == 0 ? warn : WarningSink(),
+                cache_));
+        }
+        OpenAmbientFile(sceneFiles, options);
+    }
 
     RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax,
                          std::uint64_t rayIndex) override {
-        return renderer_.TraceInput(org, dir, rmax, rayIndex);
+        RayResult r = renderers_[0]->TraceInput(org, dir, rmax, rayIndex);
+        SyncIfDue();
+        return r;
     }
+
+    void TraceBatch(std::span<const RayQuery> rays, std::span<RayResult> out) override {
+        const size_t threads = std::min(renderers_.size(), rays.size());
+        if (threads <= 1) {
+            for (size_t i = 0; i < rays.size(); ++i) {
+                out[i] = renderers_[0]->TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
+                                                   rays[i].index);
+            }
+        } else {
+            // Each thread takes the next unclaimed ray; results land in input
+            // order whatever finishes first.
+            std::atomic<size_t> next{0};
+            auto work = [&](Renderer& renderer) {
+                for (size_t i; (i = next.fetch_add(1)) < rays.size();) {
+                    out[i] = renderer.TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
+                                                 rays[i].index);
+                }
+            };
+            std::vector<std::jthread> pool;
+            for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, std::ref(*renderers_[t]));
+            work(*renderers_[0]);
+        }
+        SyncIfDue();
+    }
+
     void SetTraceCallback(std::function<void(const RayResult&)> callback,
                           bool shadowRays) override {
-        renderer_.SetTraceCallback(std::move(callback), shadowRays);
+        renderers_[0]->SetTraceCallback(std::move(callback), shadowRays);
     }
+
+    void Finish() override { Sync(); }
+
     std::string Summary() const override {
-        const RenderStats& s = renderer_.Stats();
+        RenderStats s;
+        for (const auto& r : renderers_) {
+            const RenderStats& t = r->Stats();
+            s.raysTraced += t.raysTraced;
+            s.shadowRays += t.shadowRays;
+            s.ambientLookups += t.ambientLookups;
+            s.ambientHits += t.ambientHits;
+            s.hemispheres += t.hemispheres;
+            if (s.recordsPerLevel.size() < t.recordsPerLevel.size()) {
+                s.recordsPerLevel.resize(t.recordsPerLevel.size());
+            }
+            for (size_t i = 0; i < t.recordsPerLevel.size(); ++i) {
+                s.recordsPerLevel[i] += t.recordsPerLevel[i];
+            }
+        }
         std::string out = "records per level";
         if (s.recordsPerLevel.empty()) out += " 0";
         for (size_t i = 0; i < s.recordsPerLevel.size(); ++i) {
@@ -37,12 +121,13 @@ public:
             out.append(i ? "/" : " ");
             out.append(std::to_string(s.recordsPerLevel[i]));
         }
-        char buf[200];
+        char buf[240];
         std::snprintf(buf, sizeof buf,
-                      ", %llu lookups, %.1f%% interpolated, %llu hemispheres, %llu rays traced"
-                      " + %llu shadow rays",
-                      static_cast<unsigned long long>(s.ambientLookups),
-                      s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups) : 0.0,
+                      " (+%zu from the ambient file), %llu lookups, %.1f%% interpolated, %llu "
+                      "hemispheres, %llu rays traced + %llu shadow rays",
+                      recordsLoaded_, static_cast<unsigned long long>(s.ambientLookups),
+                      s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups)
+                                       : 0.0,
                       static_cast<unsigned long long>(s.hemispheres),
                       static_cast<unsigned long long>(s.raysTraced),
                       static_cast<unsigned long long>(s.shadowRays));
@@ -50,10 +135,52 @@ public:
     }
 
 private:
-    // Declaration order matters: the core and renderer refer to scene_.
+    void OpenAmbientFile(const std::vector<std::string>& sceneFiles, const RtraceOptions& options) {
+        const std::string& path = options.ambient.file;
+        if (path.empty()) return;
+        if (!cache_) {
+            // Radiance's message for -aa 0; with -ab 0 nothing would use it.
+            if (options.ambient.bounces > 0 && warn_) {
+                warn_("zero ambient accuracy so \"" + path + "\" not opened");
+            }
+            return;
+        }
+        file_.emplace(path, HeaderParams(sceneFiles, options), warn_);
+        for (const AmbientRecord& r : file_->LoadAll()) {
+            if (cache_->Add(r)) ++recordsLoaded_;
+        }
+    }
+
+    /// Radiance syncs every kSyncInterval new records and at exit.
+    void SyncIfDue() {
+        if (!file_) return;
+        for (auto& r : renderers_) {
+            for (AmbientRecord& rec : r->TakeNewRecords()) unsynced_.push_back(rec);
+        }
+        if (unsynced_.size() >= static_cast<size_t>(SharedAmbientFile::kSyncInterval)) Sync();
+    }
+
+    void Sync() {
+        if (!file_) return;
+        for (auto& r : renderers_) {
+            for (AmbientRecord& rec : r->TakeNewRecords()) unsynced_.push_back(rec);
+        }
+        std::vector<AmbientRecord> foreign = file_->Sync(unsynced_);
+        unsynced_.clear();
+        for (const AmbientRecord& rec : foreign) {
+            if (cache_->Add(rec)) ++recordsLoaded_;
+        }
+    }
+
+    // Declaration order matters: the core and renderers refer to scene_.
     Scene scene_;
     RayCore core_;
-    Renderer renderer_;
+    WarningSink warn_;
+    std::shared_ptr<AmbientCache> cache_;
+    std::vector<std::unique_ptr<Renderer>> renderers_;
+    std::optional<SharedAmbientFile> file_;
+    std::vector<AmbientRecord> unsynced_;
+    size_t recordsLoaded_ = 0;
 };
 
 }  // namespace
@@ -64,7 +191,8 @@ std::unique_ptr<RayEvaluator> MakeSceneEvaluator(const std::vector<std::string>&
                                                  const std::string& toolDirectory) {
     SceneLoadOptions load;
     load.toolDirectory = toolDirectory;
-    return std::make_unique<SceneEvaluator>(LoadScene(sceneFiles, load, warn), options, warn);
+    return std::make_unique<SceneEvaluator>(LoadScene(sceneFiles, load, warn), sceneFiles,
+                                            options, warn);
 }
 
 std::string ExecutableDirectory() {

@@ -26,8 +26,9 @@ bool Integrator::AmbientExcluded(const TracedRay& ray) const {
 
 Rgb Integrator::AmbientFallback(const Rgb& coefficient) const {
     if (!cache_) return coefficient * ambient_.value;
-    return coefficient * AveragedAmbientValue(ambient_.value, ambient_.valueWeight,
-                                              cache_->logBrightSum(), cache_->logBrightCount());
+    if (ambient_.valueWeight <= 0) return coefficient * ambient_.value;
+    const AmbientCache::LogBrightSum s = cache_->logBright();
+    return coefficient * AveragedAmbientValue(ambient_.value, ambient_.valueWeight, s.sum, s.count);
 }
 
 Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficient,
@@ -121,6 +122,7 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     if (h.raysTraced == 0) return AmbientFallback(coefficient);
     if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
         if (cache_->Add(*record)) {
+            newRecords_.push_back(*record);
             if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {
                 stats_.recordsPerLevel.resize(level + 1);
             }

@@ -27,13 +27,15 @@ bool HasGlowSky(const Scene& scene) {
 }  // namespace
 
 Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
-                       const AmbientOptions& ambient, WarningSink warn)
+                       const AmbientOptions& ambient, WarningSink warn,
+                       std::shared_ptr<AmbientCache> cache)
     : scene_(scene),
       core_(core),
       shading_(shading),
       ambient_(ambient),
       warn_(std::move(warn)),
-      rng_(shading.seed) {
+      rng_(shading.seed),
+      cache_(std::move(cache)) {
     // Radiance's hidden "Lamb" material for -i/-I: reflectance π turns the
     // reflected radiance into irradiance.
     lambertian_.name = "Lamb";
@@ -50,13 +52,6 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
     Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
     sources_ = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
 
-    // Leave out what the options do not need: no cache without bounces or
-    // with -aa 0 (every hemisphere is then computed afresh).
-    if (ambient.bounces > 0 && ambient.divisions > 0 && ambient.accuracy > kFtiny) {
-        cache_ = std::make_unique<AmbientCache>(
-            scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
-            AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize));
-    }
     ambientList_.insert(ambient.modifierList.begin(), ambient.modifierList.end());
 
     shadowCheckCounts_.resize(257);

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "ambient/cache.h"
@@ -98,8 +99,11 @@ struct TracedRay {
 
 class Integrator {
 public:
+    /// `cache` may be shared with other Integrators (threads); null when the
+    /// options need none.
     Integrator(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
-               const AmbientOptions& ambient, WarningSink warn);
+               const AmbientOptions& ambient, WarningSink warn,
+               std::shared_ptr<AmbientCache> cache);
 
     RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax, std::uint64_t rayIndex);
 
@@ -110,8 +114,8 @@ public:
 
     const std::vector<LightSource>& sources() const { return sources_; }
     const RenderStats& stats() const { return stats_; }
-    /// The irradiance cache, or null when the options need none (-ab 0, -aa 0).
-    AmbientCache* cache() { return cache_.get(); }
+    /// Records this Integrator created since the last call (for ambient files).
+    std::vector<AmbientRecord> TakeNewRecords() { return std::exchange(newRecords_, {}); }
 
 private:
     // integrator.cpp
@@ -168,7 +172,8 @@ private:
     std::vector<LightSource> sources_;
     Material lambertian_;   // -i/-I: plastic with reflectance pi
     Rng rng_;
-    std::unique_ptr<AmbientCache> cache_;       // only with -ab > 0 and -aa > 0
+    std::shared_ptr<AmbientCache> cache_;       // only with -ab > 0 and -aa > 0
+    std::vector<AmbientRecord> newRecords_;     // created here, not yet handed out
     std::unordered_set<std::string> ambientList_;  // -ae/-ai modifier names
     int ambientDepth_ = 0;  // nesting of hemisphere computations (Radiance's ambient depth)
     RenderStats stats_;

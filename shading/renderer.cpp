@@ -9,9 +9,24 @@ struct Renderer::Impl {
     Integrator integrator;
 };
 
+std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
+                                                 const AmbientOptions& ambient) {
+    if (ambient.bounces <= 0 || ambient.divisions <= 0 || ambient.accuracy <= kFtiny) {
+        return nullptr;
+    }
+    return std::make_shared<AmbientCache>(
+        scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
+        AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize));
+}
+
 Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
                    const AmbientOptions& ambient, WarningSink warn)
-    : impl_(new Impl{Integrator(scene, core, shading, ambient, std::move(warn))}) {}
+    : Renderer(scene, core, shading, ambient, std::move(warn), MakeCache(scene, ambient)) {}
+
+Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+                   const AmbientOptions& ambient, WarningSink warn,
+                   std::shared_ptr<AmbientCache> cache)
+    : impl_(new Impl{Integrator(scene, core, shading, ambient, std::move(warn), std::move(cache))}) {}
 
 Renderer::~Renderer() = default;
 
@@ -26,5 +41,7 @@ void Renderer::SetTraceCallback(std::function<void(const RayResult&)> callback,
 }
 
 const RenderStats& Renderer::Stats() const { return impl_->integrator.stats(); }
+
+std::vector<AmbientRecord> Renderer::TakeNewRecords() { return impl_->integrator.TakeNewRecords(); }
 
 }  // namespace rt

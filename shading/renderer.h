@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 
+#include "ambient/cache.h"
 #include "ambient/options.h"
 #include "core/diagnostics.h"
 #include "raycore/raycore.h"
@@ -22,10 +23,20 @@ namespace rt {
 
 class Renderer {
 public:
+    /// The irradiance cache the options call for, or null when they need none
+    /// (-ab 0, -aa 0, -ad 0): leave out what is not used. One cache may serve
+    /// several Renderers (threads).
+    static std::shared_ptr<AmbientCache> MakeCache(const Scene& scene,
+                                                   const AmbientOptions& ambient);
+
     /// `scene` and `core` must outlive the Renderer. Finds the light sources
     /// (warning "no light sources found" through `warn` when there are none).
+    /// `cache` is from MakeCache (possibly shared); by default a private one.
     Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
              const AmbientOptions& ambient, WarningSink warn);
+    Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+             const AmbientOptions& ambient, WarningSink warn,
+             std::shared_ptr<AmbientCache> cache);
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -45,6 +56,9 @@ public:
 
     /// Counters for the end-of-run report.
     const RenderStats& Stats() const;
+
+    /// Records this Renderer created since the last call, for the ambient file.
+    std::vector<AmbientRecord> TakeNewRecords();
 
 private:
     struct Impl;
