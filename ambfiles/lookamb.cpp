@@ -3,10 +3,11 @@
 // lookamb: print the records of an ambient file as text, or turn that text back
 // into a binary ambient file. Same options and output as Radiance's lookamb
 // (src/rt/lookamb.c; radiance-notes.md §5.9):
-//   lookamb [-d] [-h] [-r] [file]      (standard input if no file)
+//   lookamb [-d] [-h] [-r|-u] [file]   (standard input if no file)
 //   -d  one TAB-separated line per record instead of the labelled form
 //   -h  no header: on output omit it; with -r, write a new one instead of copying
 //   -r  reverse: read text (labelled, or -d form with -d), write binary to stdout
+//   -u  the same as -r (lazyrad's synonym; Radiance has only -r)
 // Reading stops silently at the first invalid or truncated record, as Radiance's.
 #include <cstdio>
 #include <cstring>
@@ -134,7 +135,10 @@ int main(int argc, char** argv) {
     for (; i < argc && argv[i][0] == '-'; ++i) {
         switch (argv[i][1]) {
             case 'd': opt.dataOnly = true; break;
-            case 'r': opt.reverse = true; break;
+            case 'r':
+            case 'u':  // -u: lazyrad's synonym ("unparse" back to binary)
+                opt.reverse = true;
+                break;
             case 'h': opt.header = false; break;
             default:
                 std::fprintf(stderr, "%s: unknown option '%s'\n", argv[0], argv[i]);

@@ -100,6 +100,17 @@ TEST(Lookamb, ReverseRoundTripsBothLayouts) {
     }
 }
 
+// -u is lazyrad's synonym for Radiance's -r: the same bytes.
+TEST(Lookamb, UIsASynonymForReverse) {
+    TempDir dir;
+    const std::string src = DataPath("cornell_radiance54.amb");
+    const std::string viaR = dir.File("r.amb"), viaU = dir.File("u.amb");
+    EXPECT_EQ(Shell(kLookamb + " -d " + src + " | " + kLookamb + " -d -r > " + viaR).status, 0);
+    EXPECT_EQ(Shell(kLookamb + " -d " + src + " | " + kLookamb + " -d -u > " + viaU).status, 0);
+    EXPECT_FALSE(ReadText(viaR).empty());
+    EXPECT_EQ(ReadText(viaR), ReadText(viaU));
+}
+
 TEST(Lookamb, ReverseWithoutHeaderWritesNewOne) {
     const ToolRun r = Shell(kLookamb + " -d -h " + DataPath("cornell_radiance54.amb") + " | " +
                         kLookamb + " -d -r -h | " + kLookamb + " -h");
