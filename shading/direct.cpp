@@ -21,13 +21,7 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
     const Surface& surface = scene_.surfaces[src.surface];
     if (src.shape == LightSource::Shape::Distant) {
         // Samples of a distant source lie inside its cone by construction.
-        sray.surface = src.surface;
-        sray.hitDistant = true;
-        sray.rot = kFhuge;
-        sray.rop = sray.org;
-        sray.ron = -sray.dir;
-        sray.geometricNormal = sray.ron;
-        sray.rod = 1.0;
+        sray.SetDistantHit(src.surface);
     } else if (src.parallelogram) {
         // The sample point lies on the source by construction: no need to
         // intersect it again.

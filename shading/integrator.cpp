@@ -121,13 +121,7 @@ bool Integrator::HitDistantSource(TracedRay& ray) const {
         if (src.skip && found < 0) found = i;
     }
     if (found < 0) return false;
-    ray.surface = sources_[found].surface;
-    ray.hitDistant = true;
-    ray.rot = kFhuge;
-    ray.rop = ray.org;
-    ray.ron = -ray.dir;
-    ray.geometricNormal = ray.ron;
-    ray.rod = 1.0;
+    ray.SetDistantHit(sources_[found].surface);
     return true;
 }
 

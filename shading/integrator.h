@@ -87,6 +87,17 @@ struct TracedRay {
         return Bright(mcol) > 0.5 * Bright(rcol) ? rmt : rxt;
     }
 
+    /// Records that the ray reached distant source `sourceSurface` (Radiance's
+    /// sourcehit(): no hit point, the normal faces the ray).
+    void SetDistantHit(int sourceSurface) {
+        surface = sourceSurface;
+        hitDistant = true;
+        rot = kFhuge;
+        rop = org;
+        ron = geometricNormal = -dir;
+        rod = 1.0;
+    }
+
     /// Records where the ray hit a surface (before any shading flips).
     void SetHit(const Hit& hit) {
         surface = hit.surface;

@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/testing/shell.h"
+
 namespace {
 
 const std::string kSource = RT_SOURCE_DIR;
@@ -22,15 +24,9 @@ const std::string kRtrace = std::string(RT_BINARY_DIR) + "/bin/rtrace";
 const std::string kLookamb = std::string(RT_BINARY_DIR) + "/bin/lookamb";
 
 std::string Shell(const std::string& cmd, int* status = nullptr) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return out;
-    char buf[65536];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    int st = pclose(p);
-    if (status) *status = st;
-    return out;
+    const rt::testing::ShellResult r = rt::testing::RunShell(cmd);
+    if (status) *status = r.status;
+    return r.out;
 }
 
 std::string TempPath(const std::string& name) {

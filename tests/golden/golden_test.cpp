@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/testing/shell.h"
+
 namespace {
 
 const std::string kSource = RT_SOURCE_DIR;
@@ -47,15 +49,9 @@ std::vector<Row> ParseRows(std::istream& in) {
 /// Runs a shell command and returns its standard output; fails the test on a
 /// non-zero exit.
 std::string RunCommand(const std::string& command) {
-    std::string out;
-    FILE* p = popen(command.c_str(), "r");
-    if (!p) return out;
-    char buf[65536];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    int status = pclose(p);
-    EXPECT_EQ(status, 0) << command;
-    return out;
+    const rt::testing::ShellResult r = rt::testing::RunShell(command);
+    EXPECT_EQ(r.status, 0) << command;
+    return r.out;
 }
 
 bool RelClose(double a, double b, double tol) {
