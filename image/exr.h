@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+//
+// OpenEXR output and input for rt::Image. Pictures are written as 32-bit float
+// scanline files (ZIP, lossless), channels R, G, B plus one FLOAT channel per
+// extra layer, with string metadata attributes recording provenance (command
+// line, software version) as house style §4.13 asks. OpenEXR itself stays
+// private to image/*.cpp.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/image.h"
+
+namespace rt {
+
+/// Ordered (name, value) pairs stored as OpenEXR string attributes, e.g.
+/// {"software", "lazyrad 0.1.0"}, {"commandLine", "rtrace -ab 2 ..."}.
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+/// Throws rt::Error naming `path` when it cannot be written, or when a metadata
+/// name collides with a required OpenEXR header attribute (channels, dataWindow, ...).
+void WriteExr(const std::string& path, const Image& image, const ImageMetadata& metadata = {});
+
+/// Reads any scanline or tiled OpenEXR file; channels are converted to float.
+/// R, G, B become the colour (a lone Y channel is copied to all three); every other
+/// channel becomes a layer. String attributes are returned in `metadata` when it is
+/// non-null, in the file's (alphabetical) order. Throws rt::Error naming `path`.
+[[nodiscard]] Image ReadExr(const std::string& path, ImageMetadata* metadata = nullptr);
+
+/// True when the file starts with the OpenEXR magic number (76 2f 31 01).
+[[nodiscard]] bool IsExrFile(const std::string& path);
+
+}  // namespace rt
