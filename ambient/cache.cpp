@@ -42,11 +42,12 @@ bool AmbientCache::Add(const AmbientRecord& record) {
     return true;
 }
 
-std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q) const {
+std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* recordsUsed) const {
     const double a = accuracy_;
     // A record whose plane lies in front of the query point by more than this
     // is on another surface (Radiance's "behind" tolerance).
     const double behindTolerance = limits_.minRadius * a + 0.001;
+    *recordsUsed = 0;
     Rgb sum;
     double weightSum = 0;
     std::shared_lock lock(mutex_);
@@ -82,6 +83,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q) const {
         const double w = eps > 1e-3 ? 1.0 / eps : 1e3;
         sum += r.value * (w * f);
         weightSum += w;
+        ++*recordsUsed;
     });
     if (weightSum <= kFtiny) return std::nullopt;
     return sum / weightSum;

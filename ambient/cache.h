@@ -47,7 +47,12 @@ public:
     /// Weighted average Σ w_i E'_i / Σ w_i over the records acceptable at the
     /// query (w_i = 1/ε_i > 1/a); nullopt when none is acceptable. Never
     /// negative: a record whose extrapolation factor drops below 0.05 is not used.
-    std::optional<Rgb> Interpolate(const AmbientQuery& query) const;
+    std::optional<Rgb> Interpolate(const AmbientQuery& query) const {
+        int used = 0;
+        return Interpolate(query, &used);
+    }
+    /// As above; `recordsUsed` receives how many records contributed.
+    std::optional<Rgb> Interpolate(const AmbientQuery& query, int* recordsUsed) const;
 
     std::size_t size() const;
     /// A copy of every record, in insertion order.

@@ -84,10 +84,20 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
     return h;
 }
 
+void Integrator::NoteAmbient(RayResult::AmbientOutcome outcome, const Rgb& meanRadiance) {
+    if (firstAmbientSeen_ || ambientDepth_ != 0) return;
+    firstAmbientSeen_ = true;
+    firstOutcome_ = outcome;
+    firstIndirectIrradiance_ = meanRadiance * kPi;
+}
+
 Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3& normal) {
+    using Outcome = RayResult::AmbientOutcome;
     if (ambient_.divisions <= 0 || ambientDepth_ >= ambient_.bounces || AmbientExcluded(ray) ||
         Bright(coefficient) <= kFtiny) {
-        return AmbientFallback(coefficient);
+        const Rgb value = AmbientFallback(coefficient);
+        if (ambient_.bounces > 0) NoteAmbient(Outcome::Fallback, AmbientFallback(Rgb(1, 1, 1)));
+        return value;
     }
     if (!cache_) {
         // -aa 0: a fresh hemisphere for every shading point, sized by the
@@ -100,6 +110,7 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
         }
         Hemisphere h = SampleAmbient(ray, coefficient, weight);
         if (h.raysTraced == 0) return AmbientFallback(coefficient);
+        NoteAmbient(Outcome::Computed, h.value);
         return coefficient * h.value;
     }
     AmbientQuery query;
@@ -109,8 +120,10 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     query.level = ambientDepth_;
     query.rayWeight = ray.rweight;
     ++stats_.ambientLookups;
-    if (auto value = cache_->Interpolate(query)) {
+    int used = 0;
+    if (auto value = cache_->Interpolate(query, &used)) {
         ++stats_.ambientHits;
+        NoteAmbient(used > 1 ? Outcome::Interpolated : Outcome::Extrapolated, *value);
         return coefficient * *value;
     }
     // A new record at this level: weight 0.5^level, or about the ray's own
@@ -131,6 +144,7 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     }
     // An incomplete hemisphere still gives a usable value; it is just not
     // kept (Radiance's soft failure).
+    NoteAmbient(Outcome::Computed, h.value);
     return coefficient * h.value;
 }
 

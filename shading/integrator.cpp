@@ -183,6 +183,12 @@ void Integrator::Report(const TracedRay& ray) {
     trace_(MakeResult(ray));
 }
 
+RayResult Integrator::WithAmbientOutcome(RayResult r) const {
+    r.ambientOutcome = firstOutcome_;
+    r.indirectIrradiance = firstIndirectIrradiance_;
+    return r;
+}
+
 RayResult Integrator::MakeResult(const TracedRay& ray) const {
     RayResult r;
     r.origin = ray.org;
@@ -216,6 +222,9 @@ RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
     // -u+: a stream per input position, so identical rays are independent
     // samples; -u-: the same stream for every ray (correlated sampling).
     rng_.Seed(MixSeed(shading_.seed, shading_.uncorrelated ? rayIndex : 0));
+    firstAmbientSeen_ = false;
+    firstOutcome_ = RayResult::AmbientOutcome::None;
+    firstIndirectIrradiance_ = Rgb();
     TracedRay ray;
     ray.org = org;
     ray.dir = dir;
@@ -234,10 +243,10 @@ RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
         ray.lambertian = true;
         ShadeNormal(ray, lambertian_);
         Report(ray);
-        return MakeResult(ray);
+        return WithAmbientOutcome(MakeResult(ray));
     }
     Trace(ray);
-    return MakeResult(ray);
+    return WithAmbientOutcome(MakeResult(ray));
 }
 
 }  // namespace rt

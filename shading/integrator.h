@@ -127,6 +127,10 @@ public:
     const RenderStats& stats() const { return stats_; }
     /// Records this Integrator created since the last call (for ambient files).
     std::vector<AmbientRecord> TakeNewRecords() { return std::exchange(newRecords_, {}); }
+    /// A copy of the cache's records (empty without a cache).
+    std::vector<AmbientRecord> CacheRecords() const {
+        return cache_ ? cache_->Records() : std::vector<AmbientRecord>{};
+    }
 
 private:
     // integrator.cpp
@@ -155,6 +159,7 @@ private:
     bool AmbientExcluded(const TracedRay& ray) const;
     void Report(const TracedRay& ray);
     RayResult MakeResult(const TracedRay& ray) const;
+    RayResult WithAmbientOutcome(RayResult result) const;
 
     // direct.cpp
     /// Radiance's direct(): adds to ray.rcol the contribution of every light
@@ -184,6 +189,12 @@ private:
     Material lambertian_;   // -i/-I: plastic with reflectance pi
     Rng rng_;
     std::shared_ptr<AmbientCache> cache_;       // only with -ab > 0 and -aa > 0
+    // The indirect outcome at the first surface the current input ray
+    // shaded (reset per input ray), for RayResult.
+    RayResult::AmbientOutcome firstOutcome_ = RayResult::AmbientOutcome::None;
+    Rgb firstIndirectIrradiance_;
+    bool firstAmbientSeen_ = false;
+    void NoteAmbient(RayResult::AmbientOutcome outcome, const Rgb& meanRadiance);
     std::vector<AmbientRecord> newRecords_;     // created here, not yet handed out
     std::unordered_set<std::string> ambientList_;  // -ae/-ai modifier names
     int ambientDepth_ = 0;  // nesting of hemisphere computations (Radiance's ambient depth)

@@ -4,6 +4,7 @@
 // (radiance-notes.md §1.6): Radiance's RAY fields that reach the output.
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 
 #include "core/conventions.h"
@@ -31,6 +32,19 @@ struct RayResult {
     std::string_view modifierName = "*";  // -om: immediate modifier, "void", or "*"
     std::string_view materialName = "*";  // -oM: resolved material, "void", or "*"
     int depth = 0;              // ray-tree depth (trace output indentation)
+
+    /// How the first surface this ray shaded got its indirect light (for
+    /// pictures of the cache; rtrace prints none of this).
+    enum class AmbientOutcome : std::uint8_t {
+        None,          // no indirect calculation there (-ab 0, excluded, miss, light)
+        Interpolated,  // from two or more cache records
+        Extrapolated,  // from a single record and its gradients
+        Computed,      // a new hemisphere was sampled (a record made, or -aa 0)
+        Fallback,      // the -av/-aw ambient value
+    };
+    AmbientOutcome ambientOutcome = AmbientOutcome::None;
+    /// Indirect irradiance π·Ē at that surface (W/m²), zero if none.
+    Rgb indirectIrradiance;
 
     /// Radiance's raydistance() (-ol): the mirror length when the mirrored part
     /// dominates the value, else the unmirrored length.

@@ -44,4 +44,6 @@ const RenderStats& Renderer::Stats() const { return impl_->integrator.stats(); }
 
 std::vector<AmbientRecord> Renderer::TakeNewRecords() { return impl_->integrator.TakeNewRecords(); }
 
+std::vector<AmbientRecord> Renderer::CacheRecords() const { return impl_->integrator.CacheRecords(); }
+
 }  // namespace rt

@@ -60,6 +60,10 @@ public:
     /// Records this Renderer created since the last call, for the ambient file.
     std::vector<AmbientRecord> TakeNewRecords();
 
+    /// A copy of every record in the (possibly shared) cache, e.g. to draw
+    /// where the cache put them; empty without a cache.
+    std::vector<AmbientRecord> CacheRecords() const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

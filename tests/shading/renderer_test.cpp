@@ -227,3 +227,35 @@ TEST(Renderer, NoNegativeOrNonFiniteValuesAtGrazingAngles) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+TEST(Renderer, ReportsHowTheFirstSurfaceGotItsIndirectLight) {
+    testing::SceneBuilder b;
+    int grey = b.AddMaterial("grey50", MaterialType::Plastic, {0.5, 0.5, 0.5, 0, 0});
+    b.AddSphere("shell", grey, {0, 0, 0}, 1, /*inward=*/true);
+    AmbientOptions amb;
+    amb.value = Rgb(1, 1, 1);
+    amb.bounces = 1;
+    amb.divisions = 64;
+    amb.superSamples = 0;
+    Fixture f(b, {}, amb);
+    RayResult first = f.Trace({0, 0, 0}, {0, 0, -1});
+    EXPECT_EQ(first.ambientOutcome, RayResult::AmbientOutcome::Computed);
+    // Furnace: the hemisphere sees rho·L = 0.5 everywhere, irradiance π·0.5.
+    EXPECT_NEAR(first.indirectIrradiance.g, kPi * 0.5, 1e-9);
+    RayResult again = f.Trace({0, 0, 0}, {0, 0, -1});
+    EXPECT_EQ(again.ambientOutcome, RayResult::AmbientOutcome::Extrapolated);  // one record
+    EXPECT_NEAR(again.indirectIrradiance.g, kPi * 0.5, 1e-9);
+    EXPECT_EQ(f.renderer->CacheRecords().size(), 1u);
+
+    AmbientOptions none = amb;
+    none.bounces = 0;
+    Fixture g(b, {}, none);
+    EXPECT_EQ(g.Trace({0, 0, 0}, {0, 0, -1}).ambientOutcome, RayResult::AmbientOutcome::None);
+    EXPECT_TRUE(g.renderer->CacheRecords().empty());  // no cache at -ab 0
+}
+
+}  // namespace
+}  // namespace rt
