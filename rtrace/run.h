@@ -24,7 +24,9 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <vector>
 
+#include "ambient/record.h"
 #include "core/diagnostics.h"
 #include "core/vecmath.h"
 #include "rtrace/options.h"
@@ -61,6 +63,9 @@ public:
     /// One line on what the renderer did (records per level, lookups, hit
     /// rate, rays traced), for -t and -e; empty if there is nothing to say.
     virtual std::string Summary() const { return {}; }
+    /// A copy of every ambient cache record (to draw where the cache put
+    /// them); empty without a cache or for evaluators that have none.
+    virtual std::vector<AmbientRecord> CacheRecords() const { return {}; }
 };
 
 /// Builds the evaluator for `sceneFiles` with the effective options (seed

@@ -56,6 +56,8 @@ public:
             renderers_.push_back(std::make_unique<Renderer>(
                 scene_, core_, options.shading, options.ambient, i == 0 ? warn : WarningSink(),
                 cache_));
+            // -t asks for the report, which then says where the time went.
+            renderers_.back()->EnableTiming(options.reportSeconds > 0);
         }
         OpenAmbientFile(sceneFiles, options);
     }
@@ -98,6 +100,10 @@ public:
 
     void Finish() override { Sync(); }
 
+    std::vector<AmbientRecord> CacheRecords() const override {
+        return renderers_[0]->CacheRecords();
+    }
+
     std::string Summary() const override {
         RenderStats s;
         for (const auto& r : renderers_) {
@@ -107,6 +113,9 @@ public:
             s.ambientLookups += t.ambientLookups;
             s.ambientHits += t.ambientHits;
             s.hemispheres += t.hemispheres;
+            s.secondsSampling += t.secondsSampling;
+            s.secondsLookup += t.secondsLookup;
+            s.secondsDirect += t.secondsDirect;
             if (s.recordsPerLevel.size() < t.recordsPerLevel.size()) {
                 s.recordsPerLevel.resize(t.recordsPerLevel.size());
             }
@@ -121,16 +130,18 @@ public:
             out.append(i ? "/" : " ");
             out.append(std::to_string(s.recordsPerLevel[i]));
         }
-        char buf[240];
+        char buf[360];
         std::snprintf(buf, sizeof buf,
                       " (+%zu from the ambient file), %llu lookups, %.1f%% interpolated, %llu "
-                      "hemispheres, %llu rays traced + %llu shadow rays",
+                      "hemispheres, %llu rays traced + %llu shadow rays; thread time %.2f s "
+                      "sampling, %.2f s lookups, %.2f s direct",
                       recordsLoaded_, static_cast<unsigned long long>(s.ambientLookups),
                       s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups)
                                        : 0.0,
                       static_cast<unsigned long long>(s.hemispheres),
                       static_cast<unsigned long long>(s.raysTraced),
-                      static_cast<unsigned long long>(s.shadowRays));
+                      static_cast<unsigned long long>(s.shadowRays), s.secondsSampling,
+                      s.secondsLookup, s.secondsDirect);
         return out + buf;
     }
 

@@ -3,6 +3,7 @@
 // Radiance's direct calculation (source.c direct(), srcvalue(), raycont() for
 // shadow rays); radiance-notes.md §3.3–3.4.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "shading/integrator.h"
@@ -49,6 +50,19 @@ void Integrator::ContinueShadowRay(TracedRay& sray) {
 
 void Integrator::Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) {
     if (sources_.empty()) return;
+    if (timing_) {
+        const auto start = std::chrono::steady_clock::now();
+        timing_ = false;  // the body below is timed as one
+        DirectUntimed(ray, coef);
+        timing_ = true;
+        stats_.secondsDirect +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return;
+    }
+    DirectUntimed(ray, coef);
+}
+
+void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) {
     // Direct() is not re-entered while it runs, but keep one scratch set per
     // depth so that a future material that shades inside a shadow path
     // cannot clobber a caller's buffers.

@@ -4,12 +4,18 @@
 // of the lazy irradiance cache in ambient/: interpolate where records are
 // good enough, otherwise sample a new hemisphere and keep it as a record.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "shading/integrator.h"
 
 namespace rt {
 namespace {
+
+double Now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 /// Radiance's assumed average reflectance: weights ambient sample rays and
 /// makes deeper records count less (AVGREFL).
@@ -48,6 +54,11 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
     const Rgb sampleCoef = caching ? Rgb::Grey(kAverageReflectance)
                                    : coefficient / static_cast<double>(counts.total());
     const Vec3 point = ray.rop;
+    // Timing: only the outermost hemisphere counts (deeper ones are inside
+    // it), less what its samples spend in direct lighting and lookups.
+    const bool timeThis = timing_ && ambientDepth_ == 0;
+    const double start = timeThis ? Now() : 0.0;
+    const double directBefore = stats_.secondsDirect, lookupBefore = stats_.secondsLookup;
     ++ambientDepth_;
     ++stats_.hemispheres;
     Hemisphere h = SampleHemisphere(ray.ron, options, rng_, [&](const Vec3& dir)
@@ -81,6 +92,10 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         return AmbientSample{child.rcol * boost, dist};
     });
     --ambientDepth_;
+    if (timeThis) {
+        stats_.secondsSampling += (Now() - start) - (stats_.secondsDirect - directBefore) -
+                                  (stats_.secondsLookup - lookupBefore);
+    }
     return h;
 }
 
@@ -121,7 +136,10 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     query.rayWeight = ray.rweight;
     ++stats_.ambientLookups;
     int used = 0;
-    if (auto value = cache_->Interpolate(query, &used)) {
+    const double lookupStart = timing_ ? Now() : 0.0;
+    std::optional<Rgb> interpolated = cache_->Interpolate(query, &used);
+    if (timing_) stats_.secondsLookup += Now() - lookupStart;
+    if (auto value = interpolated) {
         ++stats_.ambientHits;
         NoteAmbient(used > 1 ? Outcome::Interpolated : Outcome::Extrapolated, *value);
         return coefficient * *value;

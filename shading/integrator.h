@@ -125,6 +125,7 @@ public:
 
     const std::vector<LightSource>& sources() const { return sources_; }
     const RenderStats& stats() const { return stats_; }
+    void EnableTiming(bool on) { timing_ = on; }
     /// Records this Integrator created since the last call (for ambient files).
     std::vector<AmbientRecord> TakeNewRecords() { return std::exchange(newRecords_, {}); }
     /// A copy of the cache's records (empty without a cache).
@@ -165,6 +166,7 @@ private:
     /// Radiance's direct(): adds to ray.rcol the contribution of every light
     /// source sample, `coef(ldir, omega)` giving the material's coefficient.
     void Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef);
+    void DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef);
     /// Radiance's srcvalue(): radiance arriving along a source ray aimed at
     /// `source`, whose sample point lies `distance` away.
     Rgb SourceValue(TracedRay& sray, int source, double distance);
@@ -199,6 +201,7 @@ private:
     std::unordered_set<std::string> ambientList_;  // -ae/-ai modifier names
     int ambientDepth_ = 0;  // nesting of hemisphere computations (Radiance's ambient depth)
     RenderStats stats_;
+    bool timing_ = false;
     // Scratch space for Direct(), one set per nesting depth, so that shading
     // allocates nothing per point.
     struct DirectContribution {

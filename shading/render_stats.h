@@ -17,6 +17,13 @@ struct RenderStats {
     std::uint64_t hemispheres = 0;       // hemispheres sampled (records made or not)
     std::vector<std::uint64_t> recordsPerLevel;  // records created, by ambient level
     std::uint64_t recordsLoaded = 0;     // records added from outside (ambient files)
+
+    // Only measured when timing is on (Renderer::EnableTiming; rtrace -t),
+    // because reading the clock around every shading point costs ~5 %.
+    double secondsSampling = 0;  // hemisphere sampling, less the direct lighting and
+                                 // lookups done at its samples' hits
+    double secondsLookup = 0;    // cache lookups (interpolation)
+    double secondsDirect = 0;    // direct lighting, shadow rays included
 };
 
 }  // namespace rt

@@ -42,6 +42,8 @@ void Renderer::SetTraceCallback(std::function<void(const RayResult&)> callback,
 
 const RenderStats& Renderer::Stats() const { return impl_->integrator.stats(); }
 
+void Renderer::EnableTiming(bool on) { impl_->integrator.EnableTiming(on); }
+
 std::vector<AmbientRecord> Renderer::TakeNewRecords() { return impl_->integrator.TakeNewRecords(); }
 
 std::vector<AmbientRecord> Renderer::CacheRecords() const { return impl_->integrator.CacheRecords(); }

@@ -56,6 +56,8 @@ public:
 
     /// Counters for the end-of-run report.
     const RenderStats& Stats() const;
+    /// Measure where time goes (RenderStats::seconds*); costs a few per cent.
+    void EnableTiming(bool on);
 
     /// Records this Renderer created since the last call, for the ambient file.
     std::vector<AmbientRecord> TakeNewRecords();
