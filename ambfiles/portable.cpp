@@ -54,27 +54,4 @@ double GetPortableFloat(const std::uint8_t* in) {
     return std::ldexp(d, static_cast<int>(GetPortableInt(in + 4, 1)));
 }
 
-std::array<std::uint8_t, kRgbeBytes> EncodeRgbe(double r, double g, double b) {
-    double d = r > g ? r : g;
-    if (b > d) d = b;
-    // The negated comparison also sends NaN to black.
-    if (!(d > 1e-32)) return {0, 0, 0, 0};
-    int e = 0;
-    d = std::frexp(d, &e) * 256.0 / d;  // same operation order as setcolr()
-    auto channel = [d](double c) -> std::uint8_t {
-        // c·d < 256 for every finite channel ≤ max; guard inf so the cast stays defined.
-        if (!(c > 0.0)) return 0;
-        const double v = c * d;
-        return v < 256.0 ? static_cast<std::uint8_t>(v) : 255;
-    };
-    // The exponent byte wraps modulo 256 like C's assignment to unsigned char.
-    return {channel(r), channel(g), channel(b), static_cast<std::uint8_t>((e + 128) & 0xff)};
-}
-
-Rgb DecodeRgbe(const std::uint8_t* in) {
-    if (in[3] == 0) return {};
-    const double f = std::ldexp(1.0, static_cast<int>(in[3]) - (128 + 8));
-    return {(in[0] + 0.5) * f, (in[1] + 0.5) * f, (in[2] + 0.5) * f};
-}
-
 }  // namespace rt

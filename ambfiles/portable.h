@@ -6,6 +6,8 @@
 // colr_color). radiance-notes.md §5.3-§5.4. No I/O here.
 #pragma once
 
+#include "core/rgbe.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -29,11 +31,5 @@ std::int64_t GetPortableInt(const std::uint8_t* in, std::size_t nbytes);
 void PutPortableFloat(double f, std::uint8_t* out);
 /// getflt(): (m ± ½)/(2^31−1)·2^e, and exactly 0 for a zero mantissa.
 double GetPortableFloat(const std::uint8_t* in);
-
-/// setcolr(): 8-bit mantissas relative to the largest channel (truncated), shared
-/// exponent + 128; all zero when the largest channel is ≤ 1e-32; negative channels → 0.
-std::array<std::uint8_t, kRgbeBytes> EncodeRgbe(double r, double g, double b);
-/// colr_color(): (byte + ½)·2^(E−136), all zero when E == 0.
-Rgb DecodeRgbe(const std::uint8_t* in);
 
 }  // namespace rt

@@ -192,29 +192,6 @@ Orientation ParseResolution(const std::string& line, const std::string& name, st
 
 }  // namespace
 
-Rgbe EncodeRgbe(const Rgb& c) {
-    double mx = std::max({c.r, c.g, c.b});
-    if (std::isnan(mx) || mx <= 1e-32)
-        return {0, 0, 0, 0};
-    if (std::isinf(mx))
-        return {255, 255, 255, 255};
-    int e = 0;
-    const double scale = std::frexp(mx, &e) * 256.0 / mx;
-    if (e > 127)
-        return {255, 255, 255, 255};
-    auto channel = [&](double v) -> std::uint8_t {
-        return v > 0 ? static_cast<std::uint8_t>(static_cast<int>(v * scale)) : 0;
-    };
-    return {channel(c.r), channel(c.g), channel(c.b), static_cast<std::uint8_t>(e + 128)};
-}
-
-Rgb DecodeRgbe(const Rgbe& c) {
-    if (c[3] == 0)
-        return {};
-    const double f = std::ldexp(1.0, static_cast<int>(c[3]) - (128 + 8));
-    return {(c[0] + 0.5) * f, (c[1] + 0.5) * f, (c[2] + 0.5) * f};
-}
-
 void WriteHdr(std::ostream& out, const Image& image, const std::vector<std::string>& headerLines,
               HdrEncoding encoding) {
     out << kMagicLine << '\n';

@@ -14,18 +14,10 @@
 #include <vector>
 
 #include "core/rgb.h"
+#include "core/rgbe.h"
 #include "image/image.h"
 
 namespace rt {
-
-using Rgbe = std::array<std::uint8_t, 4>;
-
-/// Byte-for-byte Radiance's setcolr(): 8-bit mantissas truncated against the
-/// largest channel's binary exponent; values ≤ 1e-32 and negatives encode as 0.
-/// NaN channels encode as 0; colours too large for the exponent byte saturate.
-[[nodiscard]] Rgbe EncodeRgbe(const Rgb& c);
-/// Radiance's colr_color(): (byte + 0.5)·2^(E−136), or black when E = 0.
-[[nodiscard]] Rgb DecodeRgbe(const Rgbe& c);
 
 enum class HdrEncoding {
     RunLength,  // Radiance's new-style per-component RLE (fwritecolrs), flat when

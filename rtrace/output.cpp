@@ -104,17 +104,6 @@ OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn
     return spec;
 }
 
-std::array<std::uint8_t, 4> EncodeRgbe(const Rgb& c) {
-    double mx = Intens(c);
-    if (!(mx > 1e-32)) return {0, 0, 0, 0};
-    int e = 0;
-    double d = std::frexp(mx, &e) * 256.0 / mx;
-    auto channel = [d](double v) -> std::uint8_t {
-        return v > 0 ? static_cast<std::uint8_t>(static_cast<int>(v * d)) : 0;
-    };
-    return {channel(c.r), channel(c.g), channel(c.b), static_cast<std::uint8_t>(e + 128)};
-}
-
 RecordWriter::RecordWriter(char format, std::ostream& out) : format_(format), out_(out) {
     buffer_.reserve(kDrainBytes + 4096);
 }

@@ -11,6 +11,8 @@
 //   writer.WriteRecord(spec.fields, result);   // ... writer.Flush();
 #pragma once
 
+#include "core/rgbe.h"
+
 #include <array>
 #include <cstdint>
 #include <ctime>
@@ -42,8 +44,6 @@ struct OutputSpec {
 /// value output". Warnings ("-oVW options require trace mode", ...) go to `warn`.
 OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn);
 
-/// Radiance's setcolr(): one RGBE pixel, truncating mantissas.
-std::array<std::uint8_t, 4> EncodeRgbe(const Rgb& c);
 
 /// Collects output in memory and hands it to the stream in large writes; no
 /// per-value iostream calls. Flush() pushes everything through and flushes the
