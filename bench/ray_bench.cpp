@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: MIT
+//
+// Ray throughput: raw Embree (rtcIntersect1 on the scene's triangles, nothing
+// else) against lazyrad's RayCore (Embree plus the double-precision hit
+// recomputation and Radiance's coincidence rules) and against the full shading
+// path (Renderer::TraceInput: materials, direct light with shadow rays, the
+// indirect calculation), all on the cornell box. Raw Embree is the limit; the
+// rays/s ratios are our efficiency against it (docs/benchmarks.md).
+//
+// This file includes <embree3/rtcore.h> outside raycore/ on purpose: the raw
+// baseline must not go through our wrapper. Nothing else here may use Embree.
+// (The RayCore part was tests/raycore/raycore_bench.cpp.)
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <random>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "raycore/raycore.h"
+#include "scene/loader.h"
+#include "shading/renderer.h"
+#include "tests/raycore/test_scenes.h"
+
+#ifndef RT_SOURCE_DIR
+#define RT_SOURCE_DIR "."
+#endif
+
+namespace {
+
+const std::string kCornell = std::string(RT_SOURCE_DIR) + "/scenes/cornell/cornell.rad";
+
+const rt::Scene& Cornell() {
+    static const rt::Scene scene = rt::LoadScene({kCornell}, {}, [](const std::string&) {});
+    return scene;
+}
+
+// The simple room raycore_bench used: six walls, two blocks, a light panel, a sphere.
+rt::Scene Room() {
+    rt::testing::SceneBuilder b;
+    const int white = b.AddMaterial(rt::MaterialType::Plastic);
+    const int light = b.AddMaterial(rt::MaterialType::Light);
+    b.AddBox({0, 0, 0}, {5.5, 5.5, 5.5}, white);
+    b.AddBox({1.3, 0.65, 0}, {2.9, 2.25, 1.65}, white);
+    b.AddBox({2.65, 2.95, 0}, {4.3, 4.6, 3.3}, white);
+    b.AddPolygon({{2.1, 2.1, 5.49}, {3.4, 2.1, 5.49}, {3.4, 3.4, 5.49}, {2.1, 3.4, 5.49}}, light);
+    b.AddSphere({4.2, 1.2, 0.8}, 0.8, false, white);
+    b.scene().cubeOrigin = {-1e-5, -1e-5, -1e-5};
+    b.scene().cubeSize = 5.5 + 2e-5;
+    return b.scene();
+}
+
+struct Ray {
+    rt::Vec3 org, dir;
+};
+
+// Origins uniform in the middle 90 % of the scene cube, directions uniform on
+// the sphere; generated before timing so only the queries are measured.
+std::vector<Ray> RandomRays(const rt::Scene& scene, std::size_t count) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> pos(0, 0.9 * scene.cubeSize);
+    std::normal_distribution<double> g;
+    const rt::Vec3 lo = scene.cubeOrigin + rt::Vec3{1, 1, 1} * (0.05 * scene.cubeSize);
+    std::vector<Ray> rays(count);
+    for (Ray& r : rays) {
+        r.org = lo + rt::Vec3{pos(rng), pos(rng), pos(rng)};
+        r.dir = rt::Normalize({g(rng), g(rng), g(rng)});
+    }
+    return rays;
+}
+
+constexpr std::size_t kRays = 1 << 16;
+
+void RayCoreClosestHit(benchmark::State& state, const rt::Scene& scene) {
+    const rt::RayCore core(scene);
+    const std::vector<Ray> rays = RandomRays(scene, kRays);
+    std::size_t i = 0, hits = 0;
+    for (auto _ : state) {
+        const Ray& r = rays[i++ & (kRays - 1)];
+        if (core.Intersect(r.org, r.dir, 0)) ++hits;
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["hit%"] = 100.0 * static_cast<double>(hits) / static_cast<double>(state.iterations());
+}
+
+void BM_RayCore_Room(benchmark::State& state) {
+    static const rt::Scene room = Room();
+    RayCoreClosestHit(state, room);
+}
+BENCHMARK(BM_RayCore_Room);
+
+void BM_RayCore_Cornell(benchmark::State& state) { RayCoreClosestHit(state, Cornell()); }
+BENCHMARK(BM_RayCore_Cornell);
+
+// The cornell polygons as one Embree triangle mesh (fans: its polygons are
+// convex), single precision, closest hit with rtcIntersect1.
+void BM_RawEmbree_Cornell(benchmark::State& state) {
+    const rt::Scene& scene = Cornell();
+    std::vector<float> vertices;
+    std::vector<unsigned> triangles;
+    for (const rt::Surface& s : scene.surfaces) {
+        const auto* poly = std::get_if<rt::Polygon>(&s.shape);
+        if (poly == nullptr) {
+            continue;
+        }
+        const auto base = static_cast<unsigned>(vertices.size() / 3);
+        for (const rt::Vec3& v : poly->vertices) {
+            vertices.insert(vertices.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
+                                             static_cast<float>(v.z)});
+        }
+        for (std::size_t k = 2; k < poly->vertices.size(); ++k) {
+            triangles.insert(triangles.end(), {base, base + static_cast<unsigned>(k) - 1,
+                                               base + static_cast<unsigned>(k)});
+        }
+    }
+    RTCDevice device = rtcNewDevice(nullptr);
+    RTCScene rtc = rtcNewScene(device);
+    RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
+        mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size() / 3));
+    std::copy(vertices.begin(), vertices.end(), vb);
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size() / 3));
+    std::copy(triangles.begin(), triangles.end(), ib);
+    rtcCommitGeometry(mesh);
+    rtcAttachGeometry(rtc, mesh);
+    rtcReleaseGeometry(mesh);
+    rtcCommitScene(rtc);
+
+    const std::vector<Ray> rays = RandomRays(scene, kRays);
+    std::size_t i = 0, hits = 0;
+    RTCIntersectContext context;
+    for (auto _ : state) {
+        const Ray& r = rays[i++ & (kRays - 1)];
+        RTCRayHit rh{};
+        rh.ray.org_x = static_cast<float>(r.org.x);
+        rh.ray.org_y = static_cast<float>(r.org.y);
+        rh.ray.org_z = static_cast<float>(r.org.z);
+        rh.ray.dir_x = static_cast<float>(r.dir.x);
+        rh.ray.dir_y = static_cast<float>(r.dir.y);
+        rh.ray.dir_z = static_cast<float>(r.dir.z);
+        rh.ray.tnear = 1e-6f;
+        rh.ray.tfar = 1e30f;
+        rh.ray.mask = 0xffffffffu;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcInitIntersectContext(&context);
+        rtcIntersect1(rtc, &context, &rh);
+        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++hits;
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["hit%"] = 100.0 * static_cast<double>(hits) / static_cast<double>(state.iterations());
+    rtcReleaseScene(rtc);
+    rtcReleaseDevice(device);
+}
+BENCHMARK(BM_RawEmbree_Cornell);
+
+// Input rays "ox oy oz dx dy dz" per line.
+std::vector<Ray> ReadRays(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<Ray> rays;
+    Ray r;
+    while (in >> r.org.x >> r.org.y >> r.org.z >> r.dir.x >> r.dir.y >> r.dir.z) {
+        r.dir = rt::Normalize(r.dir);
+        rays.push_back(r);
+    }
+    return rays;
+}
+
+// The full shading path. Items are input rays; "rays/s" counts every ray the
+// renderer traced (hemisphere, specular and shadow rays included), the number
+// to compare with raw Embree's closest-hit rate.
+void FullShading(benchmark::State& state, const std::string& input, rt::ShadingOptions shading,
+                 rt::AmbientOptions ambient) {
+    const rt::Scene& scene = Cornell();
+    const rt::RayCore core(scene);
+    rt::Renderer renderer(scene, core, shading, ambient, [](const std::string&) {});
+    const std::vector<Ray> rays = ReadRays(std::string(RT_SOURCE_DIR) + input);
+    if (rays.empty()) {
+        state.SkipWithError("no input rays");
+        return;
+    }
+    std::uint64_t index = 0;
+    for (auto _ : state) {
+        const Ray& r = rays[index % rays.size()];
+        benchmark::DoNotOptimize(renderer.TraceInput(r.org, r.dir, 0, index++));
+    }
+    const rt::RenderStats& stats = renderer.Stats();
+    state.SetItemsProcessed(state.iterations());
+    state.counters["rays/s"] = benchmark::Counter(
+        static_cast<double>(stats.raysTraced + stats.shadowRays), benchmark::Counter::kIsRate);
+    state.counters["shadow share"] =
+        static_cast<double>(stats.shadowRays) /
+        static_cast<double>(std::max<std::uint64_t>(1, stats.raysTraced + stats.shadowRays));
+}
+
+// -ab 0: eye rays of the 32x32 view, direct light only.
+void BM_FullShading_Cornell_ab0(benchmark::State& state) {
+    FullShading(state, "/scenes/cornell/cam32.rays", {}, {});
+}
+BENCHMARK(BM_FullShading_Cornell_ab0);
+
+// -I -ab 2 -aa 0 -ad 64 -as 0: irradiance at the floor points, no cache.
+void BM_FullShading_Cornell_I_ab2_nocache(benchmark::State& state) {
+    rt::ShadingOptions shading;
+    shading.irradiance = rt::IrradianceMode::Immediate;
+    rt::AmbientOptions ambient;
+    ambient.bounces = 2;
+    ambient.accuracy = 0;
+    ambient.divisions = 64;
+    ambient.superSamples = 0;
+    FullShading(state, "/scenes/cornell/floor.pts", shading, ambient);
+}
+BENCHMARK(BM_FullShading_Cornell_I_ab2_nocache);
+
+}  // namespace
