@@ -7,7 +7,12 @@
 //
 // In Radiance every stored field is a float in memory (AMBVAL), so a record passes
 // through float precision before it is written and a decoded record holds
-// float-exact doubles: EncodeRecord(*DecodeRecord(b)) == b for every valid b.
+// float-exact doubles: EncodeRecord(*DecodeRecord(b)) == b for the records Radiance
+// writes. Arbitrary valid bytes need not come back byte for byte (putflt has
+// non-canonical encodings, setcolr writes colours below 1e-32 as zero, and a float
+// denormal weight underflows putflt's exponent byte, so that record is not
+// IsStorable), but a storable decoded record is a fixed point after one trip
+// (tests/fuzz/fuzz_ambfile.cpp checks this).
 #pragma once
 
 #include <array>

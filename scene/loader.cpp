@@ -33,6 +33,7 @@ void RunCommand(const SceneItem& item, int depth, const FileLoc& origin,
     const FileLoc& root = origin.file.empty() ? item.loc : origin;
     std::string shown = "!";
     shown += PrintableWord(item.text);
+    if (!context.options.runCommands) ThrowUserError(item.loc, "commands disabled: " + shown);
     if (depth + 1 > kMaxCommandDepth) {
         // Reported at the outermost command: the nested location chain would be 32 deep.
         ThrowUserError(root, "commands nested more than " + std::to_string(kMaxCommandDepth) +

@@ -20,11 +20,15 @@ struct SceneLoadOptions {
     /// genbox and xform (build/bin/) are found on machines without Radiance.
     /// Empty: PATH unchanged.
     std::string toolDirectory;
+    /// False: a `!command` line is an error ("commands disabled") instead of being
+    /// run, for untrusted input (the fuzzers in tests/fuzz/).
+    bool runCommands = true;
 };
 
 /// Parses one scene stream into raw objects; `name` is used in error locations.
-/// Runs `!command` lines (recursively parsing their output). Throws rt::Error
-/// with "file:line: ..." on malformed input.
+/// Runs `!command` lines (recursively parsing their output) unless
+/// options.runCommands is false. Throws rt::Error with "file:line: ..." on
+/// malformed input.
 std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& name,
                                           const SceneLoadOptions& options,
                                           const WarningSink& warn);
