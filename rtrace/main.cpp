@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
 // rtrace: parse, build, run, map errors to exit codes (all in rtrace/run.cpp).
-#include <unistd.h>
-
 #include <iostream>
 #include <string>
 #include <vector>
@@ -14,13 +12,5 @@ int main(int argc, char** argv) {
     // Run() buffers its own output; iostreams need not track stdio.
     std::ios::sync_with_stdio(false);
     std::vector<std::string> args(argv, argv + argc);
-    const std::string toolDirectory = rt::ExecutableDirectory();
-    rt::RunEnvironment env;
-    env.makeEvaluator = [&toolDirectory](const std::vector<std::string>& files,
-                                         const rt::RtraceOptions& options,
-                                         const rt::WarningSink& warn) {
-        return rt::MakeSceneEvaluator(files, options, warn, toolDirectory);
-    };
-    env.pid = static_cast<int>(getpid());
-    return rt::Run(args, std::cin, std::cout, std::cerr, env);
+    return rt::Run(args, std::cin, std::cout, std::cerr, rt::ProcessEnvironment());
 }

@@ -14,13 +14,6 @@
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
-    const std::string toolDirectory = rt::ExecutableDirectory();
-    rt::RunEnvironment env;
-    env.makeEvaluator = [&toolDirectory](const std::vector<std::string>& files,
-                                         const rt::RtraceOptions& options,
-                                         const rt::WarningSink& warn) {
-        return rt::MakeSceneEvaluator(files, options, warn, toolDirectory);
-    };
-    env.pid = static_cast<int>(getpid());
-    return rt::RunRender(args, std::cout, std::cerr, env, isatty(STDERR_FILENO) != 0);
+    return rt::RunRender(args, std::cout, std::cerr, rt::ProcessEnvironment(),
+                         isatty(STDERR_FILENO) != 0);
 }

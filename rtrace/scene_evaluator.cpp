@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rtrace/scene_evaluator.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <cstdio>
 #include <ctime>
@@ -204,6 +206,17 @@ std::unique_ptr<RayEvaluator> MakeSceneEvaluator(const std::vector<std::string>&
     load.toolDirectory = toolDirectory;
     return std::make_unique<SceneEvaluator>(LoadScene(sceneFiles, load, warn), sceneFiles,
                                             options, warn);
+}
+
+RunEnvironment ProcessEnvironment() {
+    RunEnvironment env;
+    env.makeEvaluator = [toolDirectory = ExecutableDirectory()](
+                            const std::vector<std::string>& files, const RtraceOptions& options,
+                            const WarningSink& warn) {
+        return MakeSceneEvaluator(files, options, warn, toolDirectory);
+    };
+    env.pid = static_cast<int>(getpid());
+    return env;
 }
 
 std::string ExecutableDirectory() {

@@ -23,4 +23,8 @@ std::unique_ptr<RayEvaluator> MakeSceneEvaluator(const std::vector<std::string>&
 /// Directory of the running executable (from /proc/self/exe), empty if unknown.
 std::string ExecutableDirectory();
 
+/// The environment of this process for Run()/RunRender(): real scenes
+/// (bundled tools found next to the executable), the clock, the pid.
+RunEnvironment ProcessEnvironment();
+
 }  // namespace rt
