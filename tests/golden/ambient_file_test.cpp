@@ -151,3 +151,22 @@ TEST(Multiprocessing, TwoThreadsShareTheCacheAndKeepAccuracy) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Radiance's rule: with -aa 0 there is no cache, so the file is not opened
+/// (and not created), with Radiance's warning naming it.
+TEST(AmbientFile, ZeroAccuracyDoesNotOpenTheFile) {
+    const std::string amb = TempPath("unused.amb");
+    int status = 0;
+    std::string err = Shell("echo '1 1 0.001 0 0 1' | " + kRtrace + " -h -I -ab 1 -aa 0 -af " +
+                                amb + " " + kSource + "/scenes/cornell/cornell.rad 2>&1 >/dev/null",
+                            &status);
+    EXPECT_EQ(status, 0);
+    EXPECT_NE(err.find("rtrace: warning - zero ambient accuracy so \"" + amb + "\" not opened"),
+              std::string::npos)
+        << err;
+    EXPECT_FALSE(std::filesystem::exists(amb));
+}
+
+}  // namespace
