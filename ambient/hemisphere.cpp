@@ -60,14 +60,19 @@ class DivisionGrid {
     std::vector<Division> cells_;
 };
 
-int RowCount(const HemisphereOptions& options) {
+}  // namespace
+
+DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
     const double x = static_cast<double>(options.divisions) * options.weight / kPi;
     int rows = 0;
     // !(x > 0) also catches a NaN weight.
     if (x > 0)
         rows = static_cast<int>(std::sqrt(std::min(x, 1e9)) + 0.5);
-    return std::clamp(rows, options.caching ? 3 : 1, kMaxRows);
+    rows = std::clamp(rows, options.caching ? 3 : 1, kMaxRows);
+    return {rows, static_cast<int>(kPi * rows + 0.5)};
 }
+
+namespace {
 
 /// Cosine-weighted direction in division (t, p) with jitter (xi0, xi1) ∈ [0,1)²:
 /// sin²θ is uniform within the row, φ within the column (§4.12).
@@ -243,8 +248,9 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     RT_DCHECK(LengthSquared(normal) > 0);
     Hemisphere h;
     h.frame = RandomFrame(Normalize(normal), rng);
-    h.rows = RowCount(options);
-    h.columns = static_cast<int>(kPi * h.rows + 0.5);
+    const DivisionCounts counts = HemisphereDivisions(options);
+    h.rows = counts.rows;
+    h.columns = counts.columns;
     const int rows = h.rows;
     const int columns = h.columns;
 

@@ -56,20 +56,15 @@ struct Hemisphere {
 
 /// Ward's division counts for `options` (radiance-notes.md §4.12): rows
 /// nt = (int)(sqrt(divisions·weight/π) + 0.5), at least 3 when caching and 1
-/// otherwise, and columns np = (int)(π·nt + 0.5). The caller needs them to
-/// give each sample ray its share of the coefficient.
+/// otherwise (and at most 16384, to keep nt·np an int), and columns
+/// np = (int)(π·nt + 0.5). SampleHemisphere uses exactly these; the caller
+/// needs them to give each sample ray its share of the coefficient.
 struct DivisionCounts {
     int rows = 0;
     int columns = 0;
     int total() const { return rows * columns; }
 };
-inline DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
-    constexpr double kPiLocal = 3.14159265358979323846;
-    double d = static_cast<double>(options.divisions) * options.weight / kPiLocal;
-    int rows = d > 0 ? static_cast<int>(std::sqrt(d) + 0.5) : 0;
-    rows = std::max(rows, options.caching ? 3 : 1);
-    return {rows, static_cast<int>(kPiLocal * rows + 0.5)};
-}
+DivisionCounts HemisphereDivisions(const HemisphereOptions& options);
 
 /// Samples the hemisphere around unit `normal`. Never returns NaN or
 /// negative values; failed samples count as zero radiance and make the
