@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
 // Record radius limits from -ar and the scene size (Radiance's setambres(),
-// radiance-notes.md §4.2).
+// radiance-notes.md §4.2), and the one absolute length of the lookup.
 #pragma once
 
 namespace rt {
@@ -9,9 +9,14 @@ namespace rt {
 struct AmbientLimits {
     double minRadius = 0;  // scene units
     double maxRadius = 0;
+    /// Added to minRadius·a in the "behind" test (Radiance's 0.001 scene units).
+    double behindMargin = 0.001;
 
     /// `resolution` is -ar, `cubeSize` oconv's cube size (Scene::cubeSize).
-    static AmbientLimits FromResolution(int resolution, double cubeSize) {
+    /// `toleranceScale` (Scene::ToleranceScale(), 1 for scenes of unit size
+    /// and up) shrinks Radiance's absolute lengths with smaller scenes.
+    static AmbientLimits FromResolution(int resolution, double cubeSize,
+                                        double toleranceScale = 1.0) {
         constexpr double kFtinyLocal = 1e-6;
         AmbientLimits l;
         if (resolution > 0) {
@@ -22,8 +27,10 @@ struct AmbientLimits {
             l.minRadius = 0;
             l.maxRadius = 0.2 * cubeSize;
         }
-        if (l.minRadius <= kFtinyLocal) l.minRadius = 10.0 * kFtinyLocal;
+        const double tiny = kFtinyLocal * toleranceScale;
+        if (l.minRadius <= tiny) l.minRadius = 10.0 * tiny;
         if (l.maxRadius <= l.minRadius) l.maxRadius = 64.0 * l.minRadius;
+        l.behindMargin = 0.001 * toleranceScale;
         return l;
     }
 };

@@ -4,6 +4,7 @@
 // and an orthonormal frame. Plain value types; free functions for the algebra.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -39,6 +40,10 @@ inline double Length(const Vec3& v) { return std::sqrt(Dot(v, v)); }
 /// Unit vector along v; v must not be zero (callers check, as Radiance's normalize()).
 inline Vec3 Normalize(const Vec3& v) { return v / Length(v); }
 inline Vec3 Abs(const Vec3& v) { return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}; }
+/// Largest absolute component (the infinity norm).
+inline double MaxAbs(const Vec3& v) {
+    return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
+}
 inline bool IsFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

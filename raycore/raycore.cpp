@@ -8,7 +8,8 @@
 //     the polygon's plane and accepts or rejects the candidate;
 //   - spheres, cones, rings: user geometry whose intersect callback runs the
 //     exact shape test directly.
-// Candidates with exact t <= kFtiny or t >= tmax are rejected, so traversal
+// Candidates with exact t <= tolerance (Scene::distanceTolerance, Radiance's
+// FTINY for scenes of unit size and up) or t >= tmax are rejected, so traversal
 // simply continues past the surface a ray starts on.
 //
 // Embree's contracts relied on here:
@@ -87,7 +88,6 @@ float RoundUp(double x) {
     }
     return f;
 }
-double MaxAbs(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 /// First Embree error reported through the device callback. The callback may
 /// run on Embree's build threads, hence the mutex.
@@ -156,15 +156,16 @@ struct RayCore::Impl {
         int best = -1;
         Vec3 bestNormal;
 
-        /// Radiance's rule for a new candidate: nearer by more than kFtiny
-        /// wins; within kFtiny, material beats void, opaque beats transparent,
+        /// Radiance's rule for a new candidate: nearer by more than the
+        /// tolerance wins; within it, material beats void, opaque beats transparent,
         /// the larger material index wins, and a tie keeps the lower surface
         /// index (deterministic where Radiance keeps "the first found").
         bool Offer(double t, int surface, const Vec3& normal) {
             bool take;
-            if (best < 0 || t < bestT - kFtiny) {
+            const double tolerance = impl->tolerance;
+            if (best < 0 || t < bestT - tolerance) {
                 take = true;
-            } else if (t > bestT + kFtiny) {
+            } else if (t > bestT + tolerance) {
                 take = false;
             } else if (surface == best) {
                 take = t < bestT;
@@ -180,14 +181,15 @@ struct RayCore::Impl {
         }
 
         /// Float tfar that still admits every candidate that could matter:
-        /// anything within kFtiny of the best, plus Embree's float error.
-        float FarBound() const { return RoundUp(bestT + kFtiny + shift + slack); }
+        /// anything within the tolerance of the best, plus Embree's float error.
+        float FarBound() const { return RoundUp(bestT + impl->tolerance + shift + slack); }
     };
     static_assert(std::is_standard_layout_v<Query>, "Query must extend RTCIntersectContext");
 
     const Scene* scene = nullptr;
     Vec3 centre;                           // Embree coordinates are relative to this point
     double extent = 1;                     // size of the geometry around the centre (scene units)
+    double tolerance = kFtiny;             // Scene::distanceTolerance
     std::vector<Priority> priority;        // per surface
     std::vector<TrianglePlane> triangles;  // per Embree triangle (primID)
     UserKind spheres, cones, rings;
@@ -230,9 +232,9 @@ struct RayCore::Impl {
     static void TriangleIntersectFilter(const RTCFilterFunctionNArguments* args);
     static void TriangleOccludedFilter(const RTCFilterFunctionNArguments* args);
     static void UserBounds(const RTCBoundsFunctionArguments* args);
-    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserIntersect(const RTCIntersectFunctionNArguments* args);
-    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
 
     /// Exact t of triangle primID's polygon plane, if it is a valid candidate.
@@ -241,7 +243,7 @@ struct RayCore::Impl {
         const double denom = Dot(p.normal, q.dir);
         if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_face.c
         const double t = (p.offset - Dot(p.normal, q.org)) / denom;
-        if (!(t > kFtiny) || !(t < q.tmax)) return std::nullopt;
+        if (!(t > q.impl->tolerance) || !(t < q.tmax)) return std::nullopt;
         return t;
     }
 };
@@ -275,7 +277,7 @@ void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = kind->bounds[args->primID];
 }
 
-template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
 void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     if (!args->valid[0]) return;
@@ -284,7 +286,7 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     const int surface = kind->surfaces[args->primID];
     const auto& shape =
         std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
-    const auto h = Fn(shape, q.org, q.dir);
+    const auto h = Fn(shape, q.org, q.dir, q.impl->tolerance);
     if (!h || !(h->t < q.tmax) || !q.Offer(h->t, surface, h->normal)) return;
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
     rayhit->ray.tfar = q.FarBound();
@@ -297,7 +299,7 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     rayhit->hit.instID[0] = args->context->instID[0];
 }
 
-template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&)>
+template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
 void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     if (!args->valid[0]) return;
@@ -306,7 +308,7 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     const int surface = kind->surfaces[args->primID];
     const auto& shape =
         std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
-    const auto h = Fn(shape, q.org, q.dir);
+    const auto h = Fn(shape, q.org, q.dir, q.impl->tolerance);
     if (h && h->t < q.tmax) {
         // Embree's convention for "occluded": tfar = -inf.
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
@@ -318,6 +320,7 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
 
 void RayCore::Impl::Build(const Scene& s) {
     scene = &s;
+    tolerance = s.distanceTolerance;
     // Centre of the geometry: oconv's cube when the loader filled it in,
     // otherwise (hand-built scenes) the bounds of the surfaces.
     Bounds3 bounds;
@@ -487,7 +490,7 @@ RayCore::Impl::Query RayCore::Impl::MakeQuery(const Vec3& org, const Vec3& dir, 
     q.tmax = tmax > 0 ? tmax : kInf;
     // Embree's float distances are off by a few ulps of the largest
     // coordinate in play. The float ray starts `shift` behind the origin so
-    // that every exact t > kFtiny has a float t > 0 (tnear = 0), and the
+    // that every exact t > tolerance has a float t > 0 (tnear = 0), and the
     // exact test, not Embree, decides what is too close.
     const Vec3 rel = org - centre;
     q.slack = kFloatSlack * std::max(MaxAbs(rel), extent);
@@ -564,7 +567,8 @@ std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double
 
 std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const {
     RT_CHECK(surface >= 0 && static_cast<size_t>(surface) < impl_->scene->surfaces.size());
-    const auto h = IntersectShape(impl_->scene->surfaces[static_cast<size_t>(surface)], org, dir);
+    const auto h = IntersectShape(impl_->scene->surfaces[static_cast<size_t>(surface)], org, dir,
+                                  impl_->tolerance);
     if (!h) return std::nullopt;
     Hit hit;
     hit.t = h->t;

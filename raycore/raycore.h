@@ -42,9 +42,9 @@ public:
     RayCore(const RayCore&) = delete;
     RayCore& operator=(const RayCore&) = delete;
 
-    /// Nearest hit with kFtiny < t and, when tmax > 0, t < tmax (Radiance's rule:
-    /// distances <= FTINY are discarded). `dir` must be unit. Among hits within
-    /// kFtiny of each other, Radiance's coincidence rule picks the winner
+    /// Nearest hit with tol < t and, when tmax > 0, t < tmax, where tol is the
+    /// scene's Scene::distanceTolerance (Radiance's rule: distances <= FTINY
+    /// are discarded). `dir` must be unit. Among hits within tol of each other, Radiance's coincidence rule picks the winner
     /// (material beats void, opaque beats transparent, later modifier wins).
     /// Thread-safe.
     std::optional<Hit> Intersect(const Vec3& org, const Vec3& dir, double tmax) const;
@@ -52,7 +52,7 @@ public:
     /// Intersection with one surface only (source rays aim at their source).
     std::optional<Hit> IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const;
 
-    /// True if anything lies in (kFtiny, tmax) along the ray. Thread-safe.
+    /// True if anything lies in (tol, tmax) along the ray. Thread-safe.
     bool Occluded(const Vec3& org, const Vec3& dir, double tmax) const;
 
 private:

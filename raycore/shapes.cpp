@@ -39,7 +39,8 @@ double Cross2(double ax, double ay, double bx, double by) { return ax * by - ay 
 
 }  // namespace
 
-std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir) {
+std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir,
+                                        double tmin) {
     // Discriminant as r² − |f⊥|² (Ray Tracing Gems ch. 7): stays accurate when
     // the origin is far from a small sphere, where b² − c cancels.
     const Vec3 f = org - sphere.center;
@@ -52,7 +53,7 @@ std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, c
     const int n = StableRoots(1.0, b, LengthSquared(f) - r2, disc, roots);
     for (int i = 0; i < n; ++i) {
         const double t = roots[i];
-        if (t <= kFtiny) continue;
+        if (t <= tmin) continue;
         Vec3 normal = Normalize(f + dir * t);
         if (sphere.inward) normal = -normal;
         return ShapeHit{t, normal};
@@ -60,7 +61,8 @@ std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, c
     return std::nullopt;
 }
 
-std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir) {
+std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir,
+                                      double tmin) {
     // Frame: a = unit axis from p0, h = height along it, radius(h) = r0 + k·h.
     // With o⊥, d⊥ the parts of (org − p0) and dir perpendicular to a, the
     // lateral surface is |o⊥ + t·d⊥|² = (r0 + k·(ho + t·hd))².
@@ -86,7 +88,7 @@ std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const V
     const int n = StableRoots(qa, qb, qc, disc, roots);
     for (int i = 0; i < n; ++i) {
         const double t = roots[i];
-        if (t <= kFtiny) continue;
+        if (t <= tmin) continue;
         const double h = ho + t * hd;
         if (h < 0 || h > length) continue;  // outside the end planes
         const Vec3 radial = op + dp * t;
@@ -101,22 +103,23 @@ std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const V
     return std::nullopt;
 }
 
-std::optional<ShapeHit> IntersectRing(const Ring& ring, const Vec3& org, const Vec3& dir) {
+std::optional<ShapeHit> IntersectRing(const Ring& ring, const Vec3& org, const Vec3& dir,
+                                      double tmin) {
     const double denom = Dot(ring.normal, dir);
     if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_cone.c
     const double t = Dot(ring.normal, ring.center - org) / denom;
-    if (t <= kFtiny) return std::nullopt;
+    if (t <= tmin) return std::nullopt;
     const double rho2 = LengthSquared((org - ring.center) + dir * t);
     if (rho2 < ring.r0 * ring.r0 || rho2 > ring.r1 * ring.r1) return std::nullopt;
     return ShapeHit{t, ring.normal};
 }
 
 std::optional<double> IntersectPolygonPlane(const Polygon& polygon, const Vec3& org,
-                                            const Vec3& dir) {
+                                            const Vec3& dir, double tmin) {
     const double denom = Dot(polygon.normal, dir);
     if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_face.c
     const double t = (polygon.offset - Dot(polygon.normal, org)) / denom;
-    if (!(t > kFtiny)) return std::nullopt;
+    if (!(t > tmin)) return std::nullopt;
     return t;
 }
 
@@ -157,8 +160,9 @@ bool PointInPolygon(const Polygon& polygon, const Vec3& point) {
     return (crossings & 1) != 0;
 }
 
-std::optional<ShapeHit> IntersectPolygon(const Polygon& polygon, const Vec3& org, const Vec3& dir) {
-    const auto t = IntersectPolygonPlane(polygon, org, dir);
+std::optional<ShapeHit> IntersectPolygon(const Polygon& polygon, const Vec3& org, const Vec3& dir,
+                                         double tmin) {
+    const auto t = IntersectPolygonPlane(polygon, org, dir, tmin);
     if (!t || !PointInPolygon(polygon, org + dir * *t)) return std::nullopt;
     return ShapeHit{*t, polygon.normal};
 }
@@ -306,20 +310,21 @@ Bounds3 ShapeBounds(const Surface& surface) {
     return b;
 }
 
-std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir) {
+std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir,
+                                       double tmin) {
     switch (surface.type) {
         case SurfaceType::Polygon:
-            return IntersectPolygon(std::get<Polygon>(surface.shape), org, dir);
+            return IntersectPolygon(std::get<Polygon>(surface.shape), org, dir, tmin);
         case SurfaceType::Sphere:
         case SurfaceType::Bubble:
-            return IntersectSphere(std::get<Sphere>(surface.shape), org, dir);
+            return IntersectSphere(std::get<Sphere>(surface.shape), org, dir, tmin);
         case SurfaceType::Cone:
         case SurfaceType::Cup:
         case SurfaceType::Cylinder:
         case SurfaceType::Tube:
-            return IntersectCone(std::get<Cone>(surface.shape), org, dir);
+            return IntersectCone(std::get<Cone>(surface.shape), org, dir, tmin);
         case SurfaceType::Ring:
-            return IntersectRing(std::get<Ring>(surface.shape), org, dir);
+            return IntersectRing(std::get<Ring>(surface.shape), org, dir, tmin);
         case SurfaceType::Source:
             return std::nullopt;
     }

@@ -6,8 +6,9 @@
 // ray core uses them to recompute every candidate Embree finds, and
 // RayCore::IntersectSurface uses them directly.
 //
-// All intersectors follow Radiance's rule that distances t <= kFtiny are not
-// hits, and return the nearest remaining hit of that one surface (no tmax: the
+// All intersectors follow Radiance's rule that distances t <= tmin are not
+// hits (tmin = kFtiny in Radiance; the ray core passes the scene's
+// Scene::distanceTolerance), and return the nearest remaining hit of that one surface (no tmax: the
 // caller compares). `dir` must be unit so that t is a distance.
 #pragma once
 
@@ -21,26 +22,29 @@
 namespace rt {
 
 struct ShapeHit {
-    double t = 0;  // distance along the unit direction, > kFtiny
+    double t = 0;  // distance along the unit direction, > tmin
     Vec3 normal;   // unit, as the surface defines it (inward for bubble/cup/tube), not flipped
 };
 
 /// Sphere or bubble. Rays starting inside find the far side.
-std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir);
+std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir,
+                                        double tmin = kFtiny);
 
 /// Cone, cup, cylinder or tube: the lateral surface between the end planes
 /// through p0 and p1 (open ends, as Radiance). `inward` comes from the shape.
-std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir);
+std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir,
+                                      double tmin = kFtiny);
 
 /// Disc/annulus r0 <= |p - center| <= r1 (both radii inclusive). Rays with
 /// |dir·normal| <= kFtiny are parallel and miss, as in Radiance.
-std::optional<ShapeHit> IntersectRing(const Ring& ring, const Vec3& org, const Vec3& dir);
+std::optional<ShapeHit> IntersectRing(const Ring& ring, const Vec3& org, const Vec3& dir,
+                                      double tmin = kFtiny);
 
 /// Distance to the polygon's plane (Dot(normal, p) == offset) without the
-/// inside test; nullopt when parallel (|dir·normal| <= kFtiny) or t <= kFtiny.
+/// inside test; nullopt when parallel (|dir·normal| <= kFtiny) or t <= tmin.
 /// The ray core uses this for hits Embree already placed inside a triangle.
 std::optional<double> IntersectPolygonPlane(const Polygon& polygon, const Vec3& org,
-                                            const Vec3& dir);
+                                            const Vec3& dir, double tmin = kFtiny);
 
 /// Radiance's inface(): crossing-number test in the plane that drops the
 /// normal's largest component, for a point on (or near) the polygon's plane.
@@ -49,7 +53,8 @@ std::optional<double> IntersectPolygonPlane(const Polygon& polygon, const Vec3& 
 bool PointInPolygon(const Polygon& polygon, const Vec3& point);
 
 /// Plane distance plus PointInPolygon.
-std::optional<ShapeHit> IntersectPolygon(const Polygon& polygon, const Vec3& org, const Vec3& dir);
+std::optional<ShapeHit> IntersectPolygon(const Polygon& polygon, const Vec3& org, const Vec3& dir,
+                                         double tmin = kFtiny);
 
 /// Ear-clipping triangulation in the polygon's plane (double precision), for
 /// convex and concave simple polygons with any vertex count >= 3. Indices refer
@@ -64,6 +69,7 @@ Bounds3 ShapeBounds(const Surface& surface);
 
 /// Dispatches on the surface type (sphere/bubble, cone family, ring, polygon);
 /// nullopt for a distant source.
-std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir);
+std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir,
+                                       double tmin = kFtiny);
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 // oconv's bounding cube (oconv.c, bbox.c).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -18,8 +19,20 @@
 namespace rt {
 namespace {
 
-/// oconv's OMARGIN: the cube is grown by this on every side.
+/// oconv's OMARGIN: the cube is grown by this (times the tolerance scale) on
+/// every side.
 constexpr double kCubeMargin = 10 * kFtiny;
+/// Distance tolerances stay this many double ulps of the largest coordinate
+/// above zero, so that a small scene far from the origin still separates a
+/// surface from itself.
+constexpr double kCoordinateUlps = 1e3;
+
+/// Scene::distanceTolerance for geometry of extent `size` whose coordinates
+/// reach `maxCoordinate` in magnitude.
+double DistanceTolerance(double size, double maxCoordinate) {
+    const double floor = kCoordinateUlps * std::numeric_limits<double>::epsilon() * maxCoordinate;
+    return std::max(std::min(kFtiny, kFtiny * size), floor);
+}
 /// Radiance's VERTEPS (double build): tolerated relative distance of a vertex
 /// from the polygon's plane before "non-planar vertex" is reported.
 constexpr double kVertexEpsilon = 1e-5;
@@ -385,8 +398,11 @@ private:
             scene_.cubeSize = 1;
             return;
         }
-        const Vec3 lo = bounds.lo - Vec3(kCubeMargin, kCubeMargin, kCubeMargin);
-        const Vec3 hi = bounds.hi + Vec3(kCubeMargin, kCubeMargin, kCubeMargin);
+        scene_.distanceTolerance = DistanceTolerance(MaxAbs(bounds.hi - bounds.lo),
+                                                     std::max(MaxAbs(bounds.lo), MaxAbs(bounds.hi)));
+        const double margin = kCubeMargin * scene_.ToleranceScale();
+        const Vec3 lo = bounds.lo - Vec3(margin, margin, margin);
+        const Vec3 hi = bounds.hi + Vec3(margin, margin, margin);
         double size = 0;
         for (int i = 0; i < 3; ++i) size = std::max(size, hi[i] - lo[i]);
         for (int i = 0; i < 3; ++i) scene_.cubeOrigin[i] = (hi[i] + lo[i] - size) * 0.5;

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/conventions.h"
 #include "core/error.h"
 #include "core/vecmath.h"
 
@@ -104,6 +105,17 @@ struct Scene {
     /// 1e-5 each side; `cubeSize` is its largest extent. Drives -ar and miss distances.
     Vec3 cubeOrigin;
     double cubeSize = 0;
+    /// Radiance's FTINY used as a length: hits nearer than this are the surface
+    /// the ray starts on, and hits this close together coincide. Radiance's
+    /// absolute 1e-6 assumes scenes of about unit size; BuildScene scales it
+    /// down with scenes smaller than one unit (but keeps it well above the
+    /// double-precision spacing of their coordinates), so a model drawn at
+    /// 1e-4 behaves as at 1. Scenes of unit size or more keep exactly kFtiny.
+    double distanceTolerance = kFtiny;
+
+    /// distanceTolerance / kFtiny, in (0, 1]: the factor applied to Radiance's
+    /// other absolute lengths (the -I offsets, the ambient "behind" margin).
+    double ToleranceScale() const { return distanceTolerance / kFtiny; }
 };
 
 /// Axis-aligned bounds of a surface's geometry (empty for a distant source).

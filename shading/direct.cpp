@@ -149,7 +149,7 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
             // Stop just short of the sample point on the source itself.
             const double reach = src.shape == LightSource::Shape::Distant
                                      ? 0.0
-                                     : c.distance - std::max(kFtiny, 1e-7 * c.distance);
+                                     : c.distance - std::max(scene_.distanceTolerance, 1e-7 * c.distance);
             if (!core_.Occluded(ray.rop, c.dir, reach)) {
                 ray.rcol += c.value;
                 nhits++;

@@ -84,7 +84,7 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         child.dir = dir;
         Trace(child);
         const double dist = child.EffectiveDistance();
-        if (!(dist > kFtiny)) return std::nullopt;
+        if (!(dist > scene_.distanceTolerance)) return std::nullopt;
         // The sample's radiance, including any Russian-roulette boost the
         // child's coefficient received over the nominal one.
         const double nominal = Intens(sampleCoef);

@@ -13,7 +13,9 @@ namespace {
 constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay | kSpecularRay;
 
 /// -I: the measurement point is moved this far along the normal (Radiance's
-/// rtrace uses 1.1e-4 for the ray origin and a pretend hit 1e-5 back).
+/// rtrace uses 1.1e-4 for the ray origin and a pretend hit 1e-5 back), times
+/// Scene::ToleranceScale() so that scenes smaller than a unit keep the same
+/// proportions.
 constexpr double kImmediateOffset = 1.1e-4;
 constexpr double kImmediateHit = 1e-5;
 
@@ -232,11 +234,12 @@ RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
     if (shading_.irradiance == IrradianceMode::Immediate) {
         // The input is a measurement point and the normal of the measuring
         // plane: pretend a ray came down the normal and hit a Lambertian meter.
-        ray.org = org + dir * kImmediateOffset;
+        const double scale = scene_.ToleranceScale();
+        ray.org = org + dir * (kImmediateOffset * scale);
         ray.dir = -dir;
         ray.rmax = 0;
-        ray.rot = ray.rxt = ray.rmt = kImmediateHit;
-        ray.rop = ray.org + ray.dir * kImmediateHit;
+        ray.rot = ray.rxt = ray.rmt = kImmediateHit * scale;
+        ray.rop = ray.org + ray.dir * ray.rot;
         ray.ron = dir;
         ray.rod = 1.0;
         ray.irradianceHit = true;

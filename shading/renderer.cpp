@@ -16,7 +16,7 @@ std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
     }
     return std::make_shared<AmbientCache>(
         scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
-        AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize));
+        AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()));
 }
 
 Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,

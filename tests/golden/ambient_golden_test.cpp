@@ -11,34 +11,13 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/testing/rtrace_rows.h"
+
 namespace {
 
-const std::string kSource = RT_SOURCE_DIR;
-const std::string kRtrace = std::string(RT_BINARY_DIR) + "/bin/rtrace";
-
-/// Runs rtrace on `input` (relative to the source tree unless absolute) and
-/// returns the numbers of every output line.
-std::vector<std::vector<double>> RunRows(const std::string& args, const std::string& input) {
-    const std::string path = input.front() == '/' ? input : kSource + "/" + input;
-    std::string cmd = kRtrace + " -h -w " + args + " < " + path;
-    std::vector<std::vector<double>> rows;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return rows;
-    char line[4096];
-    while (std::fgets(line, sizeof line, p)) {
-        std::istringstream in(line);
-        std::vector<double> v;
-        double x;
-        while (in >> x) v.push_back(x);
-        rows.push_back(v);
-    }
-    EXPECT_EQ(pclose(p), 0) << cmd;
-    return rows;
-}
-
-double Luminance(const std::vector<double>& v) {
-    return 0.265074126 * v[0] + 0.670114631 * v[1] + 0.064811243 * v[2];
-}
+using rt::testing::Luminance;
+using rt::testing::RunRows;
+const std::string kSource = rt::testing::kSourceDir;
 
 class Furnace : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 
@@ -84,19 +63,10 @@ TEST(CornellFloor, TwoBouncesAtLowSettingsStayClose) {
     auto rows = RunRows("-I -ab 2 -ad 256 -as 128 -aa .2 -ar 64 " + kSource +
                             "/scenes/cornell/cornell.rad",
                         "scenes/cornell/floor.pts");
-    std::ifstream ref(kSource + "/scenes/cornell/ref/floor_I_ab2.txt");
-    double sumSq = 0, worst = 0;
-    size_t n = 0;
-    for (const auto& row : rows) {
-        std::vector<double> r(4);
-        ASSERT_TRUE(ref >> r[0] >> r[1] >> r[2] >> r[3]);
-        double e = Luminance(row) / Luminance(r) - 1;
-        sumSq += e * e;
-        worst = std::max(worst, std::fabs(e));
-        ++n;
-    }
-    ASSERT_EQ(n, 84u);
-    double rms = std::sqrt(sumSq / n);
+    const auto e = rt::testing::CompareWithReference(
+        rows, kSource + "/scenes/cornell/ref/floor_I_ab2.txt");
+    ASSERT_EQ(e.count, 84u);
+    const double rms = e.rms, worst = e.worst;
     std::printf("cornell floor -ab 2 low settings: %.2f %% RMS, %.2f %% max\n", 100 * rms, 100 * worst);
     EXPECT_LT(rms, 0.03);
     EXPECT_LT(worst, 0.18);

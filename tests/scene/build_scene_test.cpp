@@ -267,6 +267,33 @@ TEST(BuildScene, CubeAsOconv) {
     ExpectNear(empty.cubeOrigin, {-0.5, -0.5, -0.5});
 }
 
+TEST(BuildScene, DistanceToleranceFollowsSmallScenes) {
+    const auto box = [](double size, double x) {
+        std::string text = kPlastic;
+        for (double z : {0.0, size}) {
+            text += "white polygon p 0 0 12 ";
+            for (double v : {x, 0.0, z, x + size, 0.0, z, x + size, size, z, x, size, z}) {
+                text += std::to_string(v) + " ";
+            }
+            text += "\n";
+        }
+        return BuildText(text);
+    };
+    // Unit size and up: Radiance's FTINY and OMARGIN exactly.
+    EXPECT_EQ(box(1, 0).distanceTolerance, kFtiny);
+    EXPECT_EQ(box(5000, 0).distanceTolerance, kFtiny);
+    EXPECT_NEAR(box(5000, 0).cubeSize, 5000.00002, 1e-9);
+    // Smaller scenes: in proportion, margin included, so a scaled model keeps
+    // its proportions.
+    const Scene small = box(0.001, 0);
+    EXPECT_NEAR(small.distanceTolerance, 1e-9, 1e-21);
+    EXPECT_NEAR(small.ToleranceScale(), 1e-3, 1e-15);
+    EXPECT_NEAR(small.cubeSize, 0.001 * 1.00002, 1e-15);
+    // A small scene far out: never below 1000 ulps of its coordinates.
+    const Scene far = box(0.001, 1e6);
+    EXPECT_NEAR(far.distanceTolerance, 1e3 * 2.220446049250313e-16 * (1e6 + 0.001), 1e-15);
+}
+
 TEST(SurfaceBounds, ExactForCurvedSurfaces) {
     const Scene scene = BuildText(std::string(kPlastic) +
                                   "white sphere s 0 0 4 1 2 3 2\n"
