@@ -69,7 +69,16 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
     if (x > 0)
         rows = static_cast<int>(std::sqrt(std::min(x, 1e9)) + 0.5);
     rows = std::clamp(rows, options.caching ? 3 : 1, kMaxRows);
-    return {rows, static_cast<int>(kPi * rows + 0.5)};
+    int columns = static_cast<int>(kPi * rows + 0.5);
+    if (!options.caching && rows == 1) {
+        // Without the cache each sample carries 1/total of the weight, so a
+        // fixed minimum of 1×3 would make deep recursions grow as 3^depth
+        // (-ab 50 -aa 0 never finished). Take about divisions·weight samples,
+        // at least one, as Radiance's ns² = ad·wt does.
+        const double wanted = static_cast<double>(options.divisions) * options.weight;
+        if (wanted < columns) columns = std::max(1, static_cast<int>(wanted + 0.5));
+    }
+    return {rows, columns};
 }
 
 namespace {
