@@ -25,6 +25,12 @@ std::string CaseDir(const std::string& name) {
     return std::string(RT_BINARY_DIR) + "/stiff_cases/" + name + "/";
 }
 
+/// Settings of the Radiance measurements. Bounds: lazyrad on the
+/// untransformed box over seeds 1-8 (2026-11-22) measured 0.65-1.19 % RMS,
+/// 2.6-8.5 % max on the floor and 0.52-0.97 % RMS, 1.5-4.4 % max on the
+/// edges; the bounds sit above that spread.
+const std::string kCornellOptions = "-I -ab 2 -ad 512 -as 256 -aa .1 -ar 256 -n 1 ";
+
 class Transformed : public ::testing::TestWithParam<std::string> {
 protected:
     static void SetUpTestSuite() {
@@ -34,6 +40,20 @@ protected:
     }
 
     std::string Dir() const { return CaseDir(GetParam()); }
+
+    /// The case's cornell box at kCornellOptions, on SET.pts, against
+    /// ref/SET_I_ab2.txt: luminance RMS and maximum relative error bounds.
+    void ExpectCornellMatches(const std::string& set, size_t count, double maxRms,
+                              double maxWorst) const {
+        const auto e = rt::testing::CompareWithReference(
+            RunRows(kCornellOptions + Dir() + "cornell.rad", Dir() + set + ".pts"),
+            kSource + "/scenes/cornell/ref/" + set + "_I_ab2.txt");
+        EXPECT_EQ(e.count, count);
+        std::printf("%s %s: %.2f %% RMS, %.2f %% max\n", GetParam().c_str(), set.c_str(),
+                    100 * e.rms, 100 * e.worst);
+        EXPECT_LT(e.rms, maxRms);
+        EXPECT_LT(e.worst, maxWorst);
+    }
 
     /// Every value of every row is finite and within `rel` of `want`.
     static void ExpectAll(const rt::testing::Rows& rows, double want, double rel) {
@@ -45,34 +65,14 @@ protected:
     }
 };
 
-/// Settings of the Radiance measurements. Bounds: lazyrad on the
-/// untransformed box over seeds 1-8 (2026-11-22) measured 0.65-1.19 % RMS,
-/// 2.6-8.5 % max on the floor and 0.52-0.97 % RMS, 1.5-4.4 % max on the
-/// edges; the bounds sit above that spread.
-const std::string kCornellOptions = "-I -ab 2 -ad 512 -as 256 -aa .1 -ar 256 -n 1 ";
-
 TEST_P(Transformed, CornellFloorMatchesReference) {
-    const auto e = rt::testing::CompareWithReference(
-        RunRows(kCornellOptions + Dir() + "cornell.rad", Dir() + "floor.pts"),
-        kSource + "/scenes/cornell/ref/floor_I_ab2.txt");
-    EXPECT_EQ(e.count, 84u);
-    std::printf("%s floor: %.2f %% RMS, %.2f %% max\n", GetParam().c_str(), 100 * e.rms,
-                100 * e.worst);
-    EXPECT_LT(e.rms, 0.015);
-    EXPECT_LT(e.worst, 0.10);
+    ExpectCornellMatches("floor", 84, 0.015, 0.10);
 }
 
 /// Points 2 cm or less from walls and corners: light leaks through shared
 /// edges, or acne from imprecise hit points, would show here first.
 TEST_P(Transformed, CornellEdgesMatchReference) {
-    const auto e = rt::testing::CompareWithReference(
-        RunRows(kCornellOptions + Dir() + "cornell.rad", Dir() + "edges.pts"),
-        kSource + "/scenes/cornell/ref/edges_I_ab2.txt");
-    EXPECT_EQ(e.count, 40u);
-    std::printf("%s edges: %.2f %% RMS, %.2f %% max\n", GetParam().c_str(), 100 * e.rms,
-                100 * e.worst);
-    EXPECT_LT(e.rms, 0.015);
-    EXPECT_LT(e.worst, 0.07);
+    ExpectCornellMatches("edges", 40, 0.015, 0.07);
 }
 
 /// rho^(n+1) along rays and pi rho^n with -I, within 0.1 %, with the cache.
