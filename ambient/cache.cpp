@@ -15,8 +15,12 @@ namespace {
 constexpr double kMinExtrapolation = 0.05;
 constexpr double kMaxExtrapolation = 20.0;
 
+/// Deeper records than this are refused (Radiance's files store the level in
+/// one byte; -ab this deep is far beyond any use).
+constexpr int kMaxLevel = 1000;
+
 bool IsUsable(const AmbientRecord& r) {
-    return std::isfinite(r.radius[0]) && std::isfinite(r.radius[1]) && r.radius[0] > 0 &&
+    return r.level >= 0 && r.level <= kMaxLevel && std::isfinite(r.radius[0]) && std::isfinite(r.radius[1]) && r.radius[0] > 0 &&
            r.radius[1] > 0 && IsFinite(r.value) && IsFinite(r.position) && IsFinite(r.normal) &&
            r.value.r >= 0 && r.value.g >= 0 && r.value.b >= 0;
 }
@@ -25,7 +29,10 @@ bool IsUsable(const AmbientRecord& r) {
 
 AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy,
                            AmbientLimits limits)
-    : accuracy_(accuracy), limits_(limits), index_(cubeOrigin, cubeSize > 0 ? cubeSize : 1.0) {}
+    : accuracy_(accuracy),
+      limits_(limits),
+      indexOrigin_(cubeOrigin),
+      indexSize_(cubeSize > 0 ? cubeSize : 1.0) {}
 
 bool AmbientCache::Add(const AmbientRecord& record) {
     if (!IsUsable(record)) return false;
@@ -33,7 +40,11 @@ bool AmbientCache::Add(const AmbientRecord& record) {
     const auto id = static_cast<std::uint32_t>(records_.size());
     records_.push_back(record);
     // A record can only be accepted within a·r1 of its position (ε >= |Δ|/r1).
-    index_.Insert(record.position, accuracy_ * std::max(record.radius[0], record.radius[1]), id);
+    while (indexByLevel_.size() <= static_cast<size_t>(record.level)) {
+        indexByLevel_.emplace_back(indexOrigin_, indexSize_);
+    }
+    indexByLevel_[static_cast<size_t>(record.level)].Insert(
+        record.position, accuracy_ * std::max(record.radius[0], record.radius[1]), id);
     const double b = Bright(record.value);
     if (b > kFtiny) {
         logBrightSum_ += std::log(b);
@@ -51,14 +62,16 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     Rgb sum;
     double weightSum = 0;
     std::shared_lock lock(mutex_);
-    index_.ForEachContaining(q.point, [&](std::uint32_t id) {
+    // A record answers only queries of its own bounce depth: its value holds
+    // exactly the bounces left at that depth. (Radiance also lets deeper
+    // queries use shallower records, which mixes bounce counts and makes its
+    // white furnace 3 % dark at -ab 3.) Hence one index per depth: a lookup
+    // never visits the other depths' records.
+    if (q.level < 0 || static_cast<size_t>(q.level) >= indexByLevel_.size()) return std::nullopt;
+    indexByLevel_[static_cast<size_t>(q.level)].ForEachContaining(q.point, [&](std::uint32_t id) {
         const AmbientRecord& r = records_[id];
-        // A record answers only queries of its own bounce depth: its value
-        // holds exactly the bounces left at that depth. (Radiance also lets
-        // deeper queries use shallower records, which mixes bounce counts and
-        // makes its white furnace 3 % dark at -ab 3.) Within the depth, the
-        // record must come from a ray about as important as this one.
-        if (r.level != q.level) return;
+        // Within the depth, the record must come from a ray about as
+        // important as this one.
         if (r.weight < 0.9 * q.rayWeight) return;
         const double cosNormals = Dot(r.normal, q.normal);
         if (cosNormals <= 0) return;

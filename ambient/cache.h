@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
-// The in-memory irradiance cache: records indexed by a SphereOctree and
+// The in-memory irradiance cache: records indexed by one SphereOctree per
+// bounce depth and
 // interpolated with Ward's split-sphere weights and Ward & Heckbert's
 // first-order gradients (radiance-notes.md §4.12, Radiance ≤ 4.2
 // sumambient()). Records read from Radiance 5 files carry two radii and a
@@ -71,7 +72,9 @@ private:
     mutable std::shared_mutex mutex_;
     double accuracy_;
     AmbientLimits limits_;
-    SphereOctree index_;
+    Vec3 indexOrigin_;
+    double indexSize_;
+    std::vector<SphereOctree> indexByLevel_;  // [level]: records of that depth only
     std::vector<AmbientRecord> records_;
     double logBrightSum_ = 0;
     int logBrightCount_ = 0;

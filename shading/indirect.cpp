@@ -65,7 +65,16 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
                                         -> std::optional<AmbientSample> {
         TracedRay child;
         if (caching) {
-            if (!StartChild(child, ray, kAmbientRay, &sampleCoef)) return std::nullopt;
+            // A sample lost at Russian roulette is a zero in an unbiased mean,
+            // not a failed division: Radiance fails the division, so that no
+            // hemisphere below the -lw weight can be cached, and every query
+            // there computes its own; with -lr beyond ~10 that grows as
+            // (samples/2)^depth (-ab 12 -lr -60 in a closed box never ended).
+            bool lost = false;
+            if (!StartChild(child, ray, kAmbientRay, &sampleCoef, &lost)) {
+                if (lost) return AmbientSample{Rgb(), 0.0, true};
+                return std::nullopt;
+            }
         } else {
             // No Russian roulette: set the weight by hand, keep only -lr's cap.
             StartChild(child, ray, kAmbientRay, nullptr);
@@ -145,9 +154,13 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
         return coefficient * *value;
     }
     // A new record at this level: weight 0.5^level, or about the ray's own
-    // weight when the ray matters much less than that (§4.4).
+    // weight when the ray matters much less than that (§4.4). Below -lw,
+    // Russian roulette raises the survivors' weight to -lw, above 0.5^level;
+    // the record takes that weight too, or no query at this depth (all
+    // carrying -lw) could use it and every one would compute its own.
     double weight = std::pow(kAverageReflectance, ambientDepth_);
     if (ray.rweight < 0.1 * weight) weight = 1.25 * ray.rweight;
+    weight = std::max(weight, ray.rweight);
     const int level = ambientDepth_;
     Hemisphere h = SampleAmbient(ray, coefficient, weight);
     if (h.raysTraced == 0) return AmbientFallback(coefficient);

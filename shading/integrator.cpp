@@ -70,7 +70,8 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
 }
 
 bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned type,
-                            const Rgb* coef) {
+                            const Rgb* coef, bool* lostAtRoulette) {
+    if (lostAtRoulette) *lostAtRoulette = false;
     child.org = parent.rop;
     child.parent = &parent;
     child.rtype = type;
@@ -96,7 +97,10 @@ bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned 
         if (lr < 0 && child.rlvl > -lr) return false;
         if (child.rweight >= lw) return true;
         // Russian roulette: survive with probability weight/lw, boosted.
-        if (rng_.Uniform() * lw > child.rweight) return false;
+        if (rng_.Uniform() * lw > child.rweight) {
+            if (lostAtRoulette) *lostAtRoulette = true;
+            return false;
+        }
         child.rcoef *= lw / child.rweight;
         child.rweight = lw;
         return true;

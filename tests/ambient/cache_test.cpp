@@ -93,6 +93,19 @@ TEST(AmbientCache, LevelAndWeightDecideEligibility) {
     EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 1, 0.6)));  // weight < 0.9 · 0.6
     // A shallower record holds a different number of bounces: not used either.
     EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 2, 0.25)));
+    // Levels far beyond the deepest record, and nonsense levels, find nothing.
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, 40, 0.5)));
+    EXPECT_FALSE(cache.Interpolate(FloorQuery({0, 0, 0}, -1, 0.5)));
+    AmbientRecord bad = deep;
+    bad.level = -1;
+    EXPECT_FALSE(cache.Add(bad));
+    // Each depth keeps its own records: a level-5 record beside the level-1 one.
+    AmbientRecord deeper = deep;
+    deeper.level = 5;
+    deeper.value = Rgb::Grey(3);
+    EXPECT_TRUE(cache.Add(deeper));
+    EXPECT_EQ(cache.Interpolate(FloorQuery({0, 0, 0}, 5, 0.5))->g, 3.0);
+    EXPECT_EQ(cache.Interpolate(FloorQuery({0, 0, 0}, 1, 0.5))->g, deep.value.g);
 }
 
 TEST(AmbientCache, GradientsExtrapolateToFirstOrder) {
