@@ -293,6 +293,7 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
         }
     }
     h.complete = failed == 0;
+    h.anySample = failed < rows * columns;
 
     const double extraWanted = std::max(0.0, options.superSamples * options.weight);
     const int extra = static_cast<int>(std::min(extraWanted, 1e9) + 0.5);

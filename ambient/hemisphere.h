@@ -49,6 +49,7 @@ struct HemisphereOptions {
 struct Hemisphere {
     Rgb value;                // Ē: cosine-weighted mean incident radiance (= irradiance/π)
     bool complete = false;    // every division has at least one successful sample
+    bool anySample = false;   // at least one division has (else the value means nothing)
     int rows = 0;             // nt (altitude divisions)
     int columns = 0;          // np (azimuth divisions)
     int raysTraced = 0;       // first pass + super-samples

@@ -133,7 +133,7 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
                                           (std::max(ambient_.divisions, 1) * lw));
         }
         Hemisphere h = SampleAmbient(ray, coefficient, weight);
-        if (h.raysTraced == 0) return AmbientFallback(coefficient);
+        if (!h.anySample) return AmbientFallback(coefficient);
         NoteAmbient(Outcome::Computed, h.value);
         return coefficient * h.value;
     }
@@ -163,7 +163,9 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     weight = std::max(weight, ray.rweight);
     const int level = ambientDepth_;
     Hemisphere h = SampleAmbient(ray, coefficient, weight);
-    if (h.raysTraced == 0) return AmbientFallback(coefficient);
+    // No division got a sample (every ray refused, e.g. by -lr): Radiance's
+    // makeambient() failure, answered with the ambient value.
+    if (!h.anySample) return AmbientFallback(coefficient);
     if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
         if (cache_->Add(*record)) {
             newRecords_.push_back(*record);

@@ -528,6 +528,17 @@ TEST(Hemisphere, RouletteLossesCountAsZeroNotAsFailures) {
     EXPECT_NEAR(h.value.g, 4.0 * (n - lost) / n, 1e-12);
 }
 
+TEST(Hemisphere, NoSampleAtAllIsFlagged) {
+    const AmbientTraceFn refuse = [](const Vec3&) -> std::optional<AmbientSample> {
+        return std::nullopt;
+    };
+    Rng rng(1);
+    const Hemisphere h = SampleHemisphere(kTiltedNormal, Options(64, 32), rng, refuse);
+    EXPECT_FALSE(h.complete);
+    EXPECT_FALSE(h.anySample);
+    EXPECT_EQ(h.value, Rgb());
+}
+
 TEST(Hemisphere, FailedSampleMakesItIncomplete) {
     int calls = 0;
     const AmbientTraceFn trace = [&](const Vec3&) -> std::optional<AmbientSample> {
@@ -538,6 +549,7 @@ TEST(Hemisphere, FailedSampleMakesItIncomplete) {
     Rng rng(1);
     const Hemisphere h = SampleHemisphere(kTiltedNormal, Options(1024, 512), rng, trace);
     EXPECT_FALSE(h.complete);
+    EXPECT_TRUE(h.anySample);
     const int n = h.rows * h.columns;
     EXPECT_EQ(h.raysTraced, n);  // no super-sampling of an incomplete hemisphere
     EXPECT_EQ(h.distanceCount, n - 1);
