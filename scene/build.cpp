@@ -36,6 +36,9 @@ double DistanceTolerance(double size, double maxCoordinate) {
 /// Radiance's VERTEPS (double build): tolerated relative distance of a vertex
 /// from the polygon's plane before "non-planar vertex" is reported.
 constexpr double kVertexEpsilon = 1e-5;
+/// A polygon whose doubled area is below this times its squared size is
+/// degenerate (the triangulator's collinearity threshold too).
+constexpr double kDegenerateArea = 1e-14;
 
 struct MaterialSpec {
     const char* name;
@@ -245,7 +248,13 @@ private:
         for (std::size_t i = 2; i < v.size(); ++i) sum += Cross(v[i - 1] - v[0], v[i] - v[0]);
         const double length = Length(sum);
         if (!std::isfinite(length)) Fail(object, "coordinates too large");
-        if (length == 0) {
+        // Radiance tests for an exactly zero area; collinear vertices that are
+        // not collinear in binary leave rounding noise, a sliver with a random
+        // normal (and, as a light, "cannot hit source center"). Areas below
+        // 1e-14 of the polygon's squared size count as zero.
+        double size2 = 0;
+        for (const Vec3& p : v) size2 = std::max(size2, LengthSquared(p - v[0]));
+        if (length <= kDegenerateArea * size2) {
             Warn(object, "zero area");
             return false;
         }
