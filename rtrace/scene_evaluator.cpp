@@ -151,14 +151,18 @@ private:
     void OpenAmbientFile(const std::vector<std::string>& sceneFiles, const RtraceOptions& options) {
         const std::string& path = options.ambient.file;
         if (path.empty()) return;
-        if (!cache_) {
+        if (options.ambient.accuracy <= kFtiny) {
             // Radiance's message for -aa 0; with -ab 0 nothing would use it.
             if (options.ambient.bounces > 0 && warn_) {
                 warn_("zero ambient accuracy so \"" + path + "\" not opened");
             }
             return;
         }
+        // As Radiance's setambient(), the file is opened (and created with its
+        // header if need be) whenever -aa > 0, even when -ab 0 or -ad 0 leave
+        // no cache; its records are then not even read.
         file_.emplace(path, HeaderParams(sceneFiles, options), warn_);
+        if (!cache_) return;
         for (const AmbientRecord& r : file_->LoadAll()) {
             if (cache_->Add(r)) ++recordsLoaded_;
         }
@@ -180,6 +184,7 @@ private:
         }
         std::vector<AmbientRecord> foreign = file_->Sync(unsynced_);
         unsynced_.clear();
+        if (!cache_) return;
         for (const AmbientRecord& rec : foreign) {
             if (cache_->Add(rec)) ++recordsLoaded_;
         }
