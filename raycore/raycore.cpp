@@ -158,8 +158,11 @@ struct RayCore::Impl {
 
         /// Radiance's rule for a new candidate: nearer by more than the
         /// tolerance wins; within it, material beats void, opaque beats transparent,
-        /// the larger material index wins, and a tie keeps the lower surface
-        /// index (deterministic where Radiance keeps "the first found").
+        /// the larger material index wins, and a tie goes to the nearer surface,
+        /// then the lower surface index (where Radiance keeps "the first
+        /// found"). Nearer first: a ray that took the farther of two walls
+        /// 1e-7 apart would start its reflections behind the nearer one and
+        /// hit its back at grazing angles (acne).
         bool Offer(double t, int surface, const Vec3& normal) {
             bool take;
             const double tolerance = impl->tolerance;
@@ -170,7 +173,8 @@ struct RayCore::Impl {
             } else if (surface == best) {
                 take = t < bestT;
             } else {
-                take = impl->Beats(surface, best);
+                const int order = impl->Compare(surface, best);
+                take = order != 0 ? order > 0 : (t != bestT ? t < bestT : surface < best);
             }
             if (take) {
                 bestT = t;
@@ -209,14 +213,16 @@ struct RayCore::Impl {
         if (errors.code != RTC_ERROR_NONE) ThrowEmbreeError(errors.code, errors.message, call);
     }
 
-    bool Beats(int candidate, int incumbent) const {
+    /// +1 if `candidate`'s material outranks `incumbent`'s in Radiance's
+    /// coincidence rule, -1 if it ranks below, 0 if they rank the same.
+    int Compare(int candidate, int incumbent) const {
         const Priority& c = priority[static_cast<size_t>(candidate)];
         const Priority& b = priority[static_cast<size_t>(incumbent)];
         const bool cVoid = c.material < 0, bVoid = b.material < 0;
-        if (cVoid != bVoid) return !cVoid;
-        if (c.transparent != b.transparent) return !c.transparent;
-        if (c.material != b.material) return c.material > b.material;
-        return candidate < incumbent;
+        if (cVoid != bVoid) return cVoid ? -1 : 1;
+        if (c.transparent != b.transparent) return c.transparent ? -1 : 1;
+        if (c.material != b.material) return c.material > b.material ? 1 : -1;
+        return 0;
     }
 
     void Build(const Scene& s);

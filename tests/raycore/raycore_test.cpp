@@ -369,6 +369,19 @@ TEST(RayCore, CoincidentPolygonsFollowRadianceRule) {
     b.AddPolygon(square(2), m);
     RayCore core(b.scene());
     EXPECT_EQ(core.Intersect({0.1, 0.1, 0}, {0, 0, 1}, 0)->surface, a);
+    // Same material, within kFtiny but not at the same distance: the nearer
+    // one, from either side and in either order (a ray stopping on the
+    // farther one would start its reflections behind the nearer one).
+    for (const bool nearFirst : {true, false}) {
+        SceneBuilder bn;
+        const int mn = bn.AddMaterial(MaterialType::Plastic);
+        const int lower = nearFirst ? bn.AddPolygon(square(2 - 5e-7), mn) : -1;
+        const int upper = bn.AddPolygon(square(2), mn);
+        const int lower2 = nearFirst ? lower : bn.AddPolygon(square(2 - 5e-7), mn);
+        RayCore coreN(bn.scene());
+        EXPECT_EQ(coreN.Intersect({0.1, 0.1, 0}, {0, 0, 1}, 0)->surface, lower2) << nearFirst;
+        EXPECT_EQ(coreN.Intersect({0.1, 0.1, 4}, {0, 0, -1}, 0)->surface, upper) << nearFirst;
+    }
     // More than kFtiny apart: the nearer one, whatever its material.
     SceneBuilder b2;
     const int glass = b2.AddMaterial(MaterialType::Glass);
