@@ -115,15 +115,9 @@ Frame RandomFrame(const Vec3& n, Rng& rng) {
 struct Traced {
     Rgb radiance;
     double inverseDistance = 0;
-    bool hasDistance = true;  // false for a Russian-roulette loss
 };
 std::optional<Traced> TraceOne(const AmbientTraceFn& trace, const Vec3& dir) {
     const std::optional<AmbientSample> s = trace(dir);
-    if (s && s->roulette) {
-        Traced lost;
-        lost.hasDistance = false;
-        return lost;
-    }
     if (!s || !(s->distance > 0) || !IsFinite(s->radiance))
         return std::nullopt;
     Traced out;
@@ -286,10 +280,8 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
             d.mean = s->radiance;
             d.samples = 1;
             d.nearestInverseDistance = s->inverseDistance;
-            if (s->hasDistance) {
-                h.inverseDistanceSum += s->inverseDistance;
-                ++h.distanceCount;
-            }
+            h.inverseDistanceSum += s->inverseDistance;
+            ++h.distanceCount;
         }
     }
     h.complete = failed == 0;

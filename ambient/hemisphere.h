@@ -28,15 +28,11 @@ namespace rt {
 struct AmbientSample {
     Rgb radiance;           // radiance arriving along the ray (W·sr⁻¹·m⁻²)
     double distance = 0;    // effective hit distance (> 0); a miss reports a large distance
-    /// The ray lost at Russian roulette: it counts as radiance 0 (the
-    /// survivors carry the boost, so the mean stays unbiased) and says nothing
-    /// about distances.
-    bool roulette = false;
 };
 
 /// Traces one ray from the record's point in unit direction `dir`; nullopt
 /// when the ray was refused (depth limit) or hit at distance <= 1e-6 (the
-/// division fails); a sample marked `roulette` when Russian roulette took it.
+/// division fails).
 using AmbientTraceFn = std::function<std::optional<AmbientSample>(const Vec3& dir)>;
 
 struct HemisphereOptions {

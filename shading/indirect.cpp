@@ -46,11 +46,8 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
     options.weight = weight;
     options.caching = caching;
     const DivisionCounts counts = HemisphereDivisions(options);
-    // With the cache every sample ray weighs half its parent (so Russian
-    // roulette rarely triggers); without it, each carries its true share of
-    // the coefficient, and is never dropped: the sample count was already cut
-    // to what the weight deserves and -ab bounds the recursion (Radiance drops
-    // such samples and comes out biased low).
+    // With the cache every sample ray weighs half its parent (Radiance's
+    // AVGREFL); without it, each carries its true share of the coefficient.
     const Rgb sampleCoef = caching ? Rgb::Grey(kAverageReflectance)
                                    : coefficient / static_cast<double>(counts.total());
     const Vec3 point = ray.rop;
@@ -63,26 +60,22 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
     ++stats_.hemispheres;
     Hemisphere h = SampleHemisphere(ray.ron, options, rng_, [&](const Vec3& dir)
                                         -> std::optional<AmbientSample> {
+        // Hemisphere samples never go to Russian roulette, with or without
+        // the cache; only -lr's depth cap refuses them. Their number is
+        // already set by the weight, and -ab bounds the depth. Radiance
+        // rolls for them below -lw and fails the division of every loser:
+        // below -lw no record can be cached, every query computes its own
+        // hemisphere, and the work grows as (samples/2)^depth (-ab 12 -lr -60
+        // in a closed box never ended). Counting losers as zeros instead
+        // kept it linear, but one coarse record per wall then carried that
+        // noise multiplicatively down 40 levels (a rho 0.999 box 62 % dark
+        // for most seeds at -ar 4 -ab 50).
         TracedRay child;
-        if (caching) {
-            // A sample lost at Russian roulette is a zero in an unbiased mean,
-            // not a failed division: Radiance fails the division, so that no
-            // hemisphere below the -lw weight can be cached, and every query
-            // there computes its own; with -lr beyond ~10 that grows as
-            // (samples/2)^depth (-ab 12 -lr -60 in a closed box never ended).
-            bool lost = false;
-            if (!StartChild(child, ray, kAmbientRay, &sampleCoef, &lost)) {
-                if (lost) return AmbientSample{Rgb(), 0.0, true};
-                return std::nullopt;
-            }
-        } else {
-            // No Russian roulette: set the weight by hand, keep only -lr's cap.
-            StartChild(child, ray, kAmbientRay, nullptr);
-            child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
-            child.rcoef = sampleCoef;
-            const int lr = shading_.limits.reflections;
-            if (lr != 0 && child.rlvl > std::abs(lr)) return std::nullopt;
-        }
+        StartChild(child, ray, kAmbientRay, nullptr);
+        child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
+        child.rcoef = sampleCoef;
+        const int lr = shading_.limits.reflections;
+        if (lr != 0 && child.rlvl > std::abs(lr)) return std::nullopt;
         // Light sources seen from the sample's hit are subdivided (-ds) for
         // the path's real importance: the cache's nominal 0.5 would halve the
         // subdivision distance and turn lamps partly hidden by an edge into
@@ -94,11 +87,7 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         Trace(child);
         const double dist = child.EffectiveDistance();
         if (!(dist > scene_.distanceTolerance)) return std::nullopt;
-        // The sample's radiance, including any Russian-roulette boost the
-        // child's coefficient received over the nominal one.
-        const double nominal = Intens(sampleCoef);
-        const double boost = nominal > 0 ? Intens(child.rcoef) / nominal : 1.0;
-        return AmbientSample{child.rcol * boost, dist};
+        return AmbientSample{child.rcol, dist};
     });
     --ambientDepth_;
     if (timeThis) {

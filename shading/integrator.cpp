@@ -70,8 +70,7 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
 }
 
 bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned type,
-                            const Rgb* coef, bool* lostAtRoulette) {
-    if (lostAtRoulette) *lostAtRoulette = false;
+                            const Rgb* coef) {
     child.org = parent.rop;
     child.parent = &parent;
     child.rtype = type;
@@ -97,10 +96,7 @@ bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned 
         if (lr < 0 && child.rlvl > -lr) return false;
         if (child.rweight >= lw) return true;
         // Russian roulette: survive with probability weight/lw, boosted.
-        if (rng_.Uniform() * lw > child.rweight) {
-            if (lostAtRoulette) *lostAtRoulette = true;
-            return false;
-        }
+        if (rng_.Uniform() * lw > child.rweight) return false;
         child.rcoef *= lw / child.rweight;
         child.rweight = lw;
         return true;

@@ -137,9 +137,7 @@ private:
     // integrator.cpp
     /// Radiance's rayorigin(): sets up `child` from `parent`; false if the ray
     /// must not be traced (weight limits, Russian roulette). `coef` may be null.
-    /// `lostAtRoulette`, if given, tells whether Russian roulette refused it.
-    bool StartChild(TracedRay& child, const TracedRay& parent, unsigned type, const Rgb* coef,
-                    bool* lostAtRoulette = nullptr);
+    bool StartChild(TracedRay& child, const TracedRay& parent, unsigned type, const Rgb* coef);
     /// Traces and shades `ray` (raytrace()): closest hit, distant sources, trace callback.
     void Trace(TracedRay& ray);
     /// Shades a ray that hit `ray.surface` (rayshade()); with -i, Lamb replaces materials.

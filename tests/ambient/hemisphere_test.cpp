@@ -508,26 +508,6 @@ TEST(Hemisphere, SuperSamplingNeedsEnoughSamplesAndRows) {
     EXPECT_EQ(h.raysTraced, h.columns);
 }
 
-/// A sample lost at Russian roulette is a zero in the mean (its survivors
-/// carry the boost), not a failed division: the hemisphere stays complete and
-/// cacheable, and the lost ray says nothing about distances.
-TEST(Hemisphere, RouletteLossesCountAsZeroNotAsFailures) {
-    int calls = 0;
-    const AmbientTraceFn trace = [&](const Vec3&) -> std::optional<AmbientSample> {
-        if (++calls % 2 == 0) return AmbientSample{Rgb(), 0.0, true};
-        return AmbientSample{Rgb::Grey(4), 2.0};
-    };
-    Rng rng(1);
-    const Hemisphere h = SampleHemisphere(kTiltedNormal, Options(64, 0), rng, trace);
-    EXPECT_TRUE(h.complete);
-    const int n = h.rows * h.columns;
-    const int lost = n / 2;
-    EXPECT_EQ(h.raysTraced, n);
-    EXPECT_EQ(h.distanceCount, n - lost);
-    EXPECT_NEAR(h.inverseDistanceSum, 0.5 * (n - lost), 1e-9);
-    EXPECT_NEAR(h.value.g, 4.0 * (n - lost) / n, 1e-12);
-}
-
 TEST(Hemisphere, NoSampleAtAllIsFlagged) {
     const AmbientTraceFn refuse = [](const Vec3&) -> std::optional<AmbientSample> {
         return std::nullopt;

@@ -10,7 +10,11 @@
 // translated.)
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -21,8 +25,10 @@ namespace {
 using rt::testing::RunRows;
 const std::string kSource = rt::testing::kSourceDir;
 
-std::string CaseDir(const std::string& name) {
-    return std::string(RT_BINARY_DIR) + "/stiff_cases/" + name + "/";
+/// Where this test process generates the cases: ctest runs every test in
+/// its own process, in parallel, so each generates its own copy.
+std::string CasesRoot() {
+    return ::testing::TempDir() + "lazyrad_stiff_cases_" + std::to_string(getpid());
 }
 
 /// Settings of the Radiance measurements. Bounds: lazyrad on the
@@ -35,11 +41,15 @@ class Transformed : public ::testing::TestWithParam<std::string> {
 protected:
     static void SetUpTestSuite() {
         const std::string cmd = kSource + "/tests/stiff/generate.sh " + RT_BINARY_DIR +
-                                "/bin/xform " + RT_BINARY_DIR + "/stiff_cases";
+                                "/bin/xform " + CasesRoot();
         ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     }
+    static void TearDownTestSuite() {
+        std::error_code ec;
+        std::filesystem::remove_all(CasesRoot(), ec);
+    }
 
-    std::string Dir() const { return CaseDir(GetParam()); }
+    std::string Dir() const { return CasesRoot() + "/" + GetParam() + "/"; }
 
     /// The case's cornell box at kCornellOptions, on SET.pts, against
     /// ref/SET_I_ab2.txt: luminance RMS and maximum relative error bounds.
