@@ -117,23 +117,18 @@ TEST(ParameterLimits, ZeroWeightLimitFinishes) {
 
 // ----- where Radiance clamps or rejects -----
 
-/// setambacc: a negative -aa is 0, i.e. no cache.
-TEST(ParameterClamps, NegativeAccuracyIsZero) {
+/// setambacc and setambres: a negative -aa is 0 (no cache), a negative -ar
+/// is 0 (minimum radius 10·FTINY, maximum 0.2 of the scene cube).
+TEST(ParameterClamps, NegativeAccuracyAndResolutionAreZero) {
     const std::string points = ThreePoints();
-    const Rows zero = rt::testing::RunRows(kBase + "-aa 0 " + kCornell, points);
-    ASSERT_TRUE(FiniteNonNegative(zero, 3, 3));
-    EXPECT_EQ(
-        MaxRelativeDifference(rt::testing::RunRows(kBase + "-aa -1 " + kCornell, points), zero), 0);
-}
-
-/// setambres: a negative -ar is 0 (minimum radius 10·FTINY, maximum 0.2 of
-/// the scene cube).
-TEST(ParameterClamps, NegativeResolutionIsZero) {
-    const std::string points = ThreePoints();
-    const Rows zero = rt::testing::RunRows(kBase + "-ar 0 " + kCornell, points);
-    ASSERT_TRUE(FiniteNonNegative(zero, 3, 3));
-    EXPECT_EQ(
-        MaxRelativeDifference(rt::testing::RunRows(kBase + "-ar -5 " + kCornell, points), zero), 0);
+    for (const std::string option : {"-aa", "-ar"}) {
+        const Rows zero = rt::testing::RunRows(kBase + option + " 0 " + kCornell, points);
+        ASSERT_TRUE(FiniteNonNegative(zero, 3, 3)) << option;
+        EXPECT_EQ(MaxRelativeDifference(
+                      rt::testing::RunRows(kBase + option + " -5 " + kCornell, points), zero),
+                  0)
+            << option;
+    }
 }
 
 /// multambient: -ad 0 or less means the ambient value (-av) everywhere, as
