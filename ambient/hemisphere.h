@@ -59,9 +59,9 @@ struct Hemisphere {
 /// Ward's division counts for `options` (radiance-notes.md §4.12): rows
 /// nt = (int)(sqrt(divisions·weight/π) + 0.5), at least 3 when caching and 1
 /// otherwise (and at most 16384, to keep nt·np an int), and columns
-/// np = (int)(π·nt + 0.5); without the cache, a single row has only about
-/// divisions·weight columns (at least 1), so that the sample count keeps
-/// falling with the weight as Radiance's does. SampleHemisphere uses exactly these; the caller
+/// np = (int)(π·nt + 0.5); without the cache, a single row shrinks to one
+/// column once divisions·weight falls below 1/3, so that deep recursions stay
+/// linear (Radiance: one sample below ad·wt = 1). SampleHemisphere uses exactly these; the caller
 /// needs them to give each sample ray its share of the coefficient.
 struct DivisionCounts {
     int rows = 0;

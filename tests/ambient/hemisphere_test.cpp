@@ -85,12 +85,13 @@ TEST(Hemisphere, RowsAndColumnsFollowWardsFormula) {
         int rows, columns;
     };
     // nt = (int)(sqrt(ad·wt/π) + 0.5), minimum 3 (cache) or 1; np = (int)(π·nt + 0.5),
-    // but without the cache a single row has about ad·wt columns (at least 1).
+    // but without the cache a single row is one column once ad·wt < 1/3.
     for (const Case& c :
          {Case{1024, 1.0, true, 18, 57}, Case{1024, 0.5, true, 13, 41},
           Case{1024, 0.25, true, 9, 28}, Case{4, 1.0, true, 3, 9}, Case{4, 1.0, false, 1, 3},
-          Case{2, 1.0, false, 1, 2}, Case{1, 0.3, false, 1, 1}, Case{8, 0.08, false, 1, 1},
-          Case{0, 1.0, false, 1, 1}, Case{-5, 1.0, true, 3, 9}, Case{256, 1.0, true, 9, 28}}) {
+          Case{2, 1.0, false, 1, 3}, Case{1, 0.34, false, 1, 3}, Case{1, 0.33, false, 1, 1},
+          Case{8, 0.04, false, 1, 1}, Case{0, 1.0, false, 1, 1}, Case{-5, 1.0, true, 3, 9},
+          Case{256, 1.0, true, 9, 28}}) {
         const Hemisphere h = SampleHemisphere(
             Vec3(0, 0, 1), Options(c.divisions, 0, c.weight, c.caching), rng, trace);
         EXPECT_EQ(h.rows, c.rows) << c.divisions << " " << c.weight;
