@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 namespace rt {
 namespace {
@@ -18,6 +19,12 @@ constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay |
 /// proportions.
 constexpr double kImmediateOffset = 1.1e-4;
 constexpr double kImmediateHit = 1e-5;
+
+/// Unit vectors u, v with (u, v, n) orthonormal.
+std::pair<Vec3, Vec3> TangentAxes(const Vec3& n) {
+    const Vec3 u = Normalize(Perpendicular(n));
+    return {u, Cross(n, u)};
+}
 
 bool HasGlowSky(const Scene& scene) {
     for (const Surface& s : scene.surfaces) {
@@ -174,6 +181,30 @@ void Integrator::PassThrough(TracedRay& ray) {
     ray.rxt = ray.rot + child.rxt;
 }
 
+Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double offset) const {
+    // The surface the sensor sits on, just below the measuring point.
+    const auto floor = core_.Intersect(point, -normal, 2 * offset);
+    if (!floor) return point;
+    const auto [u, v] = TangentAxes(normal);
+    for (const Vec3& d : {u, -u, v, -v}) {
+        // A surface through the point crosses this short probe at its middle.
+        const auto wall = core_.Intersect(point - d * offset, d, 2 * offset);
+        if (!wall || wall->surface == floor->surface ||
+            std::fabs(wall->t - offset) > 1e-2 * offset) {
+            continue;
+        }
+        // The room is on the side of the wall where the floor goes on.
+        const auto floorOn = [&](double side) {
+            const auto h = core_.Intersect(point + wall->normal * (side * offset), -normal,
+                                           2 * offset);
+            return h && h->surface == floor->surface;
+        };
+        const bool front = floorOn(1), back = floorOn(-1);
+        if (front != back) point += wall->normal * (front ? offset : -offset);
+    }
+    return point;
+}
+
 void Integrator::FlipSurface(TracedRay& ray) const {
     ray.ron = -ray.ron;
     ray.rod = -ray.rod;
@@ -239,7 +270,8 @@ RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
         ray.dir = -dir;
         ray.rmax = 0;
         ray.rot = ray.rxt = ray.rmt = kImmediateHit * scale;
-        ray.rop = ray.org + ray.dir * ray.rot;
+        ray.rop = OffWallsThroughSensor(ray.org + ray.dir * ray.rot, dir,
+                                        kImmediateOffset * scale);
         ray.ron = dir;
         ray.rod = 1.0;
         ray.irradianceHit = true;

@@ -180,6 +180,12 @@ private:
     void ShadeGlass(TracedRay& ray, const Material& m);
     void ShadeDielectric(TracedRay& ray, const Material& m); // dielectric, interface
     void ShadeMaterial(TracedRay& ray, const Material& m);   // dispatch on type
+    /// -I: a measuring point lying in the plane of a wall (a sensor on an
+    /// edge or in a corner) would send half its sample rays through that
+    /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point
+    /// `offset` off each such wall, to the side where the surface under the
+    /// sensor continues; elsewhere returns it unchanged.
+    Vec3 OffWallsThroughSensor(Vec3 point, const Vec3& normal, double offset) const;
     void FlipSurface(TracedRay& ray) const;
 
     const Scene& scene_;

@@ -136,8 +136,6 @@ TEST(SensorsOnSurfaces, BesideEdgesMatchEdgeReference) {
 /// The same sensors exactly on the edge, i.e. in the plane of the wall: the
 /// answer must be the limit from inside the room.
 TEST(SensorsOnSurfaces, OnEdgesMatchEdgeReference) {
-    GTEST_SKIP() << "bug: a -I sensor in the plane of a wall sees through that wall "
-                    "(14.8 % RMS, 24.8 % max low; see the report)";
     const auto e = CompareWithEdges(FloorEdgePoints(0), 1, 20);
     std::printf("on the edge: %.2f %% RMS, %.2f %% max\n", 100 * e.rms, 100 * e.worst);
     EXPECT_LT(e.rms, kBesideEdgeRms);
@@ -177,7 +175,6 @@ TEST(SensorsOnSurfaces, OnEdgesAndInCornersAreFiniteAndNonNegative) {
 /// differed by 0.1-0.4 % (seeds 1-2), the dark corner behind the tall block
 /// by 0.4-3.9 %; bound 6 %. Floor and ceiling corners now come out 2-18 % low.
 TEST(SensorsOnSurfaces, InCornersMatchPointsBesideThem) {
-    GTEST_SKIP() << "bug: a -I sensor in a corner sees through both walls (up to 18 % low)";
     const Rows corner = rt::testing::RunRows(kCornellOptions + kCornell,
                                              WriteTempFile("corners.pts", CornerPoints(0)));
     const Rows inside = rt::testing::RunRows(kCornellOptions + kCornell,
