@@ -20,7 +20,8 @@ constexpr double kMaxExtrapolation = 20.0;
 constexpr int kMaxLevel = 1000;
 
 bool IsUsable(const AmbientRecord& r) {
-    return r.level >= 0 && r.level <= kMaxLevel && std::isfinite(r.radius[0]) && std::isfinite(r.radius[1]) && r.radius[0] > 0 &&
+    return r.level >= 0 && r.level <= kMaxLevel && std::isfinite(r.radius[0]) &&
+           std::isfinite(r.radius[1]) && r.radius[0] > 0 &&
            r.radius[1] > 0 && IsFinite(r.value) && IsFinite(r.position) && IsFinite(r.normal) &&
            r.value.r >= 0 && r.value.g >= 0 && r.value.b >= 0;
 }

@@ -105,8 +105,9 @@ Vec3 DivisionDirection(const Frame& frame, int t, int p, int rows, int columns, 
 /// layout and its aliasing; a random azimuth (as Radiance 5 does) decorrelates
 /// them. The u axis is stored in the record, so nothing downstream depends on it.
 Frame RandomFrame(const Vec3& n, Rng& rng) {
-    const Vec3 u0 = Perpendicular(n);
-    const Vec3 v0 = Cross(n, u0);
+    const Frame fixed = Frame::Around(n);
+    const Vec3& u0 = fixed.u;
+    const Vec3& v0 = fixed.v;
     const double azimuth = 2.0 * kPi * rng.Uniform();
     Frame frame;
     frame.n = n;

@@ -68,9 +68,17 @@ struct Bounds3 {
     void Extend(const Bounds3& b) { lo = Min(lo, b.lo); hi = Max(hi, b.hi); }
 };
 
+inline Vec3 Perpendicular(const Vec3& n);
+
 /// Orthonormal frame with z along a given unit normal (Mitsuba's Frame).
 struct Frame {
     Vec3 u, v, n;
+
+    /// The frame around unit `n` with u = Perpendicular(n), v = n × u.
+    static Frame Around(const Vec3& n) {
+        const Vec3 u = Perpendicular(n);
+        return {u, Cross(n, u), n};
+    }
 
     Vec3 ToWorld(const Vec3& local) const { return u * local.x + v * local.y + n * local.z; }
     Vec3 ToLocal(const Vec3& w) const { return {Dot(w, u), Dot(w, v), Dot(w, n)}; }

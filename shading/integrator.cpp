@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <utility>
 
 namespace rt {
 namespace {
@@ -19,12 +18,6 @@ constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay |
 /// proportions.
 constexpr double kImmediateOffset = 1.1e-4;
 constexpr double kImmediateHit = 1e-5;
-
-/// Unit vectors u, v with (u, v, n) orthonormal.
-std::pair<Vec3, Vec3> TangentAxes(const Vec3& n) {
-    const Vec3 u = Normalize(Perpendicular(n));
-    return {u, Cross(n, u)};
-}
 
 bool HasGlowSky(const Scene& scene) {
     for (const Surface& s : scene.surfaces) {
@@ -185,8 +178,8 @@ Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double of
     // The surface the sensor sits on, just below the measuring point.
     const auto floor = core_.Intersect(point, -normal, 2 * offset);
     if (!floor) return point;
-    const auto [u, v] = TangentAxes(normal);
-    for (const Vec3& d : {u, -u, v, -v}) {
+    const Frame frame = Frame::Around(normal);
+    for (const Vec3& d : {frame.u, -frame.u, frame.v, -frame.v}) {
         // A surface through the point crosses this short probe at its middle.
         const auto wall = core_.Intersect(point - d * offset, d, 2 * offset);
         if (!wall || wall->surface == floor->surface ||

@@ -440,7 +440,7 @@ Scene MixedScene() {
             }
             case 4: {
                 const Vec3 n = RandomDirection(rng);
-                const Frame f{Perpendicular(n), Cross(n, Perpendicular(n)), n};
+                const Frame f = Frame::Around(n);
                 const double s = size(rng);
                 b.AddPolygon({c + f.ToWorld({0, 0, 0}), c + f.ToWorld({2 * s, 0, 0}),
                               c + f.ToWorld({2 * s, s, 0}), c + f.ToWorld({s, s, 0}),
