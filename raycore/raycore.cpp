@@ -4,8 +4,10 @@
 // exact answer comes from raycore/shapes.h in double. The two meet in
 // callbacks that receive a Query (our RTCIntersectContext extension) carrying
 // the caller's double ray and the best hit so far:
-//   - triangles (polygons): an intersection/occlusion filter recomputes t on
-//     the polygon's plane and accepts or rejects the candidate;
+//   - polygons, as an Embree quad mesh (pairs of their triangles sharing an
+//     edge; a lone triangle repeats its last vertex): an intersection/
+//     occlusion filter recomputes t on the polygon's plane and accepts or
+//     rejects the candidate;
 //   - spheres, cones, rings: user geometry whose intersect callback runs the
 //     exact shape test directly.
 // Candidates with exact t <= tolerance (Scene::distanceTolerance, Radiance's
@@ -28,10 +30,12 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <type_traits>
@@ -63,8 +67,8 @@ struct Priority {
     bool transparent = false;  // istransp() of the material
 };
 
-/// Plane of the polygon a triangle came from (exact t for the filter).
-struct TrianglePlane {
+/// Plane of the polygon a quad primitive came from (exact t for the filter).
+struct PolygonPlane {
     Vec3 normal;
     double offset = 0;
     int surface = -1;
@@ -132,6 +136,42 @@ const char* ErrorName(RTCError code) {
     throw Error(kind, text);
 }
 
+/// The Embree quad (v0, v1, v2, v3) made of triangles a and b if they share an
+/// edge; Embree splits a quad into (v0, v1, v3) and (v2, v3, v1), which are
+/// then exactly a and b with their own orientation, so the union need not be
+/// convex.
+std::optional<std::array<int, 4>> JoinTriangles(const std::array<int, 3>& a,
+                                                const std::array<int, 3>& b) {
+    for (int k = 0; k < 3; ++k) {
+        const int x = a[k], y = a[(k + 1) % 3], opposite = a[(k + 2) % 3];
+        for (int m = 0; m < 3; ++m) {
+            // b runs along the shared edge the other way: (other, y, x).
+            if (b[m] == y && b[(m + 1) % 3] == x) return std::array{opposite, x, b[(m + 2) % 3], y};
+        }
+    }
+    return std::nullopt;
+}
+
+/// A polygon's triangles as Embree quads: consecutive triangles sharing an
+/// edge are paired (a quad test costs about as much as one triangle test, and
+/// most polygons are quadrilaterals); a triangle left over repeats its last
+/// vertex, Embree's way of putting a triangle in a quad mesh.
+std::vector<std::array<int, 4>> PairTriangles(const std::vector<std::array<int, 3>>& triangles) {
+    std::vector<std::array<int, 4>> quads;
+    for (size_t i = 0; i < triangles.size(); ++i) {
+        const auto& a = triangles[i];
+        if (i + 1 < triangles.size()) {
+            if (auto quad = JoinTriangles(a, triangles[i + 1])) {
+                quads.push_back(*quad);
+                ++i;
+                continue;
+            }
+        }
+        quads.push_back({a[0], a[1], a[2], a[2]});
+    }
+    return quads;
+}
+
 }  // namespace
 
 struct RayCore::Impl {
@@ -195,7 +235,7 @@ struct RayCore::Impl {
     double extent = 1;                     // size of the geometry around the centre (scene units)
     double tolerance = kFtiny;             // Scene::distanceTolerance
     std::vector<Priority> priority;        // per surface
-    std::vector<TrianglePlane> triangles;  // per Embree triangle (primID)
+    std::vector<PolygonPlane> quads;       // per Embree quad primitive (primID)
     UserKind spheres, cones, rings;
 
     EmbreeErrors errors;
@@ -226,7 +266,7 @@ struct RayCore::Impl {
     }
 
     void Build(const Scene& s);
-    void BuildTriangles();
+    void BuildPolygons();
     void BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,
                        RTCOccludedFunctionN occluded);
     Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax, RTCRay& ray) const;
@@ -235,17 +275,17 @@ struct RayCore::Impl {
     /// scene), or nullopt when it cannot reach the scene at all.
     std::optional<double> DistanceToScene(const Vec3& org, const Vec3& dir) const;
 
-    static void TriangleIntersectFilter(const RTCFilterFunctionNArguments* args);
-    static void TriangleOccludedFilter(const RTCFilterFunctionNArguments* args);
+    static void PolygonIntersectFilter(const RTCFilterFunctionNArguments* args);
+    static void PolygonOccludedFilter(const RTCFilterFunctionNArguments* args);
     static void UserBounds(const RTCBoundsFunctionArguments* args);
     template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserIntersect(const RTCIntersectFunctionNArguments* args);
     template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
 
-    /// Exact t of triangle primID's polygon plane, if it is a valid candidate.
-    static std::optional<double> TriangleT(const Query& q, unsigned primID) {
-        const TrianglePlane& p = q.impl->triangles[primID];
+    /// Exact t of quad primID's polygon plane, if it is a valid candidate.
+    static std::optional<double> PlaneT(const Query& q, unsigned primID) {
+        const PolygonPlane& p = q.impl->quads[primID];
         const double denom = Dot(p.normal, q.dir);
         if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_face.c
         const double t = (p.offset - Dot(p.normal, q.org)) / denom;
@@ -258,12 +298,12 @@ struct RayCore::Impl {
 // Callbacks. Only rtcIntersect1/rtcOccluded1 are used, so every callback sees
 // N == 1 and the ray/hit pointers are plain RTCRay/RTCHit/RTCRayHit.
 
-void RayCore::Impl::TriangleIntersectFilter(const RTCFilterFunctionNArguments* args) {
+void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     auto& q = *reinterpret_cast<Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
-    const auto t = TriangleT(q, hit->primID);
-    const TrianglePlane& plane = q.impl->triangles[hit->primID];
+    const auto t = PlaneT(q, hit->primID);
+    const PolygonPlane& plane = q.impl->quads[hit->primID];
     if (!t || !q.Offer(*t, plane.surface, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
         return;
@@ -271,11 +311,11 @@ void RayCore::Impl::TriangleIntersectFilter(const RTCFilterFunctionNArguments* a
     reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
 }
 
-void RayCore::Impl::TriangleOccludedFilter(const RTCFilterFunctionNArguments* args) {
+void RayCore::Impl::PolygonOccludedFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
-    if (!TriangleT(q, hit->primID)) args->valid[0] = 0;
+    if (!PlaneT(q, hit->primID)) args->valid[0] = 0;
 }
 
 void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
@@ -352,7 +392,7 @@ void RayCore::Impl::Build(const Scene& s) {
         const int index = static_cast<int>(i);
         switch (surface.type) {
             case SurfaceType::Polygon:
-                break;  // BuildTriangles
+                break;  // BuildPolygons
             case SurfaceType::Sphere:
             case SurfaceType::Bubble:
                 RT_CHECK(std::get<Sphere>(surface.shape).inward ==
@@ -394,7 +434,7 @@ void RayCore::Impl::Build(const Scene& s) {
     // spend more on the build for faster traversal.
     rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
 
-    BuildTriangles();
+    BuildPolygons();
     BuildUserKind(spheres, &UserIntersect<Sphere, IntersectSphere>,
                   &UserOccluded<Sphere, IntersectSphere>);
     BuildUserKind(cones, &UserIntersect<Cone, IntersectCone>, &UserOccluded<Cone, IntersectCone>);
@@ -404,7 +444,7 @@ void RayCore::Impl::Build(const Scene& s) {
     Check("rtcCommitScene");
 }
 
-void RayCore::Impl::BuildTriangles() {
+void RayCore::Impl::BuildPolygons() {
     std::vector<float> vertices;
     std::vector<unsigned> indices;
     for (size_t i = 0; i < scene->surfaces.size(); ++i) {
@@ -419,22 +459,22 @@ void RayCore::Impl::BuildTriangles() {
             vertices.insert(vertices.end(), {static_cast<float>(r.x), static_cast<float>(r.y),
                                              static_cast<float>(r.z)});
         }
-        for (const auto& tri : TriangulatePolygon(polygon)) {
-            for (int k : tri) indices.push_back(base + static_cast<unsigned>(k));
-            triangles.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
+        for (const auto& quad : PairTriangles(TriangulatePolygon(polygon))) {
+            for (int k : quad) indices.push_back(base + static_cast<unsigned>(k));
+            quads.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
         }
     }
-    if (triangles.empty()) return;
+    if (quads.empty()) return;
 
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
     Check("rtcNewGeometry");
     // Embree pads buffers it allocates itself (it reads 16 bytes per vertex).
     auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
                                                            RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                                                            vertices.size() / 3));
     auto* ib = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(unsigned), triangles.size()));
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                4 * sizeof(unsigned), quads.size()));
     if (!vb || !ib) {
         rtcReleaseGeometry(geometry);
         Check("rtcSetNewGeometryBuffer");
@@ -442,12 +482,12 @@ void RayCore::Impl::BuildTriangles() {
     }
     std::copy(vertices.begin(), vertices.end(), vb);
     std::copy(indices.begin(), indices.end(), ib);
-    rtcSetGeometryIntersectFilterFunction(geometry, &TriangleIntersectFilter);
-    rtcSetGeometryOccludedFilterFunction(geometry, &TriangleOccludedFilter);
+    rtcSetGeometryIntersectFilterFunction(geometry, &PolygonIntersectFilter);
+    rtcSetGeometryOccludedFilterFunction(geometry, &PolygonOccludedFilter);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(rtcScene, geometry);
     rtcReleaseGeometry(geometry);
-    Check("triangle mesh");
+    Check("polygon mesh");
 }
 
 void RayCore::Impl::BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,

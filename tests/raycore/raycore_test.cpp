@@ -131,6 +131,32 @@ TEST(RayCore, ConcavePolygonNotch) {
     }
 }
 
+// Polygons reach Embree as quads made of triangle pairs, plus a lone triangle
+// for an odd count: every part of a regular n-gon must be hit, nothing outside.
+TEST(RayCore, PolygonsOfEveryVertexCountAreCovered) {
+    for (int n = 3; n <= 9; ++n) {
+        SceneBuilder b;
+        std::vector<Vec3> vertices;
+        for (int k = 0; k < n; ++k) {
+            const double phi = 2 * kPi * k / n;
+            vertices.push_back({std::cos(phi), std::sin(phi), 0});
+        }
+        b.AddPolygon(vertices);
+        RayCore core(b.scene());
+        const double inner = std::cos(kPi / n);  // inscribed circle radius
+        for (int k = 0; k < 360; ++k) {
+            const double phi = 2 * kPi * (k + 0.5) / 360;
+            const Vec3 dir{std::cos(phi), std::sin(phi), 0};
+            for (double r : {0.1, 0.5, 0.99 * inner}) {
+                EXPECT_TRUE(core.Intersect(dir * r + Vec3{0, 0, 1}, {0, 0, -1}, 0))
+                    << n << "-gon, inside at " << dir * r;
+            }
+            EXPECT_FALSE(core.Intersect(dir * 1.01 + Vec3{0, 0, 1}, {0, 0, -1}, 0))
+                << n << "-gon, outside at " << dir * 1.01;
+        }
+    }
+}
+
 TEST(RayCore, RaysFromFarAwayAreAdvancedNotRejected) {
     // Embree's float rays must stay within ~1.8e19 of the origin; a ray from
     // much farther must still find the scene, with the exact distance.
