@@ -122,7 +122,7 @@ struct Traced {
     Rgb radiance;
     double inverseDistance = 0;
 };
-std::optional<Traced> TraceOne(const AmbientTraceFn& trace, const Vec3& dir) {
+std::optional<Traced> TraceOne(AmbientTraceRef trace, const Vec3& dir) {
     const std::optional<AmbientSample> s = trace(dir);
     if (!s || !(s->distance > 0) || !IsFinite(s->radiance))
         return std::nullopt;
@@ -259,7 +259,7 @@ Vec3 RotationalGradient(const DivisionGrid& divs, const Frame& frame) {
 }  // namespace
 
 Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
-                            const AmbientTraceFn& trace) {
+                            AmbientTraceRef trace) {
     RT_DCHECK(LengthSquared(normal) > 0);
     Hemisphere h;
     h.frame = RandomFrame(Normalize(normal), rng);

@@ -18,6 +18,7 @@
 
 #include "ambient/limits.h"
 #include "ambient/record.h"
+#include "core/function_ref.h"
 #include "core/random.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
@@ -33,7 +34,11 @@ struct AmbientSample {
 /// Traces one ray from the record's point in unit direction `dir`; nullopt
 /// when the ray was refused (depth limit) or hit at distance <= 1e-6 (the
 /// division fails).
+/// AmbientTraceFn owns its callable (tests keep environments in one);
+/// SampleHemisphere only borrows it for the call, through an AmbientTraceRef,
+/// which costs no allocation or type-erased copy per hemisphere.
 using AmbientTraceFn = std::function<std::optional<AmbientSample>(const Vec3& dir)>;
+using AmbientTraceRef = FunctionRef<std::optional<AmbientSample>(const Vec3& dir)>;
 
 struct HemisphereOptions {
     int divisions = 1024;    // -ad: about this many first-pass samples at weight 1
@@ -74,7 +79,7 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options);
 /// negative values; failed samples count as zero radiance and make the
 /// result incomplete.
 Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
-                            const AmbientTraceFn& trace);
+                            AmbientTraceRef trace);
 
 /// Turns a complete hemisphere into a classic (isotropic) record: radius from
 /// the harmonic mean distance, limited by the gradient and clamped to

@@ -107,7 +107,7 @@ BENCHMARK(BM_HemisphereSampling)->Arg(128)->Arg(512)->Arg(1024);
 void BM_RecordCreation(benchmark::State& state) {
     rt::HemisphereOptions options;  // -ad 1024 -as 512
     rt::Rng rng(4);
-    const rt::Hemisphere h = rt::SampleHemisphere({0, 0, 1}, options, rng, Analytic);
+    const rt::Hemisphere h = rt::SampleHemisphere({0, 0, 1}, options, rng, rt::AmbientTraceFn(Analytic));
     const rt::AmbientLimits limits = rt::AmbientLimits::FromResolution(256, 5.56);
     for (auto _ : state) {
         auto record = rt::MakeClassicRecord({1, 2, 0}, {0, 0, 1}, h, 0, 1.0, limits);

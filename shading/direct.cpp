@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "shading/integrator.h"
 
@@ -14,6 +15,28 @@ namespace {
 /// Radiance tests at least this many shadow rays per shading point (MINSHADCNT)
 /// before the -dt threshold may stop testing.
 constexpr int kMinShadowTests = 2;
+
+/// Stable sort by decreasing brightness. Almost every shading point has a few
+/// contributions, where an insertion sort beats std::stable_sort, which
+/// allocates a buffer each call (2 % of a cornell -ab 2 run).
+template <typename Contribution>
+void SortBrightestFirst(std::vector<Contribution>& c) {
+    constexpr size_t kInsertionMax = 16;
+    const auto brighter = [](const Contribution& a, const Contribution& b) {
+        return a.bright > b.bright;
+    };
+    if (c.size() > kInsertionMax) {
+        std::stable_sort(c.begin(), c.end(), brighter);
+        return;
+    }
+    for (size_t i = 1; i < c.size(); ++i) {
+        if (!brighter(c[i], c[i - 1])) continue;
+        const Contribution moving = c[i];
+        size_t j = i;
+        for (; j > 0 && brighter(moving, c[j - 1]); --j) c[j] = c[j - 1];
+        c[j] = moving;
+    }
+}
 
 }  // namespace
 
@@ -114,12 +137,7 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         if (c.bright > 0.0) contribs.push_back(c);
     }
     if (contribs.empty()) return;
-    if (contribs.size() > 1) {
-        std::stable_sort(contribs.begin(), contribs.end(),
-                         [](const DirectContribution& a, const DirectContribution& b) {
-                             return a.bright > b.bright;
-                         });
-    }
+    SortBrightestFirst(contribs);
     const int n = static_cast<int>(contribs.size());
     // Tail sums: tail[k] = Σ_{m >= k} bright_m.
     auto& tail = scratch.tail;
