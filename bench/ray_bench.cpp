@@ -96,6 +96,41 @@ BENCHMARK(BM_RayCore_Room);
 void BM_RayCore_Cornell(benchmark::State& state) { RayCoreClosestHit(state, Cornell()); }
 BENCHMARK(BM_RayCore_Cornell);
 
+// Shadow rays as the direct calculation sends them: from points on the
+// surfaces (closest hits of random rays) to random points on the lamp,
+// stopping just short of it. Exercises the interior layer that leaves the
+// room's bounding polygons out (raycore/hull.h).
+void BM_RayCore_ShadowRays_Cornell(benchmark::State& state) {
+    const rt::Scene& scene = Cornell();
+    const rt::RayCore core(scene);
+    const auto lamp = std::find_if(scene.surfaces.begin(), scene.surfaces.end(),
+                                   [](const rt::Surface& s) { return s.name == "lamp_panel"; });
+    const auto& corners = std::get<rt::Polygon>(lamp->shape).vertices;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Ray> segments;
+    std::vector<double> lengths;
+    for (const Ray& r : RandomRays(scene, kRays)) {
+        const auto hit = core.Intersect(r.org, r.dir, 0);
+        if (!hit || hit->surface == lamp - scene.surfaces.begin()) continue;
+        const rt::Vec3 target = corners[0] + (corners[1] - corners[0]) * u(rng) +
+                                (corners[3] - corners[0]) * u(rng);
+        const rt::Vec3 d = target - hit->point;
+        const double length = rt::Length(d);
+        segments.push_back({hit->point, d / length});
+        lengths.push_back(length * (1 - 1e-7));
+    }
+    std::size_t i = 0, blocked = 0;
+    for (auto _ : state) {
+        const std::size_t k = i++ % segments.size();
+        if (core.Occluded(segments[k].org, segments[k].dir, lengths[k])) ++blocked;
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["blocked%"] =
+        100.0 * static_cast<double>(blocked) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_RayCore_ShadowRays_Cornell);
+
 // The cornell polygons as one Embree triangle mesh (fans: its polygons are
 // convex), single precision, closest hit with rtcIntersect1.
 void BM_RawEmbree_Cornell(benchmark::State& state) {

@@ -43,6 +43,7 @@
 
 #include "core/check.h"
 #include "core/conventions.h"
+#include "raycore/hull.h"
 #include "raycore/shapes.h"
 
 namespace rt {
@@ -230,20 +231,33 @@ struct RayCore::Impl {
     };
     static_assert(std::is_standard_layout_v<Query>, "Query must extend RTCIntersectContext");
 
+    /// One Embree scene over some of the surfaces.
+    struct Layer {
+        RTCScene rtc = nullptr;
+        /// Per quad primitive (primID); the polygon filters' geometry user data.
+        std::vector<PolygonPlane> quads;
+    };
+
     const Scene* scene = nullptr;
     Vec3 centre;                           // Embree coordinates are relative to this point
     double extent = 1;                     // size of the geometry around the centre (scene units)
     double tolerance = kFtiny;             // Scene::distanceTolerance
     std::vector<Priority> priority;        // per surface
-    std::vector<PolygonPlane> quads;       // per Embree quad primitive (primID)
     UserKind spheres, cones, rings;
 
     EmbreeErrors errors;
     RTCDevice device = nullptr;
-    RTCScene rtcScene = nullptr;
+    Layer all;  // every surface
+    /// Every surface but the bounding polygons, for occlusion tests between
+    /// points inside the bounding planes (see raycore/hull.h). Built only when
+    /// the scene has bounding polygons and local light sources (whose shadow
+    /// rays are such tests); otherwise interior.rtc stays null.
+    Layer interior;
+    BoundingPolygons bounding;
 
     ~Impl() {
-        if (rtcScene) rtcReleaseScene(rtcScene);
+        if (interior.rtc) rtcReleaseScene(interior.rtc);
+        if (all.rtc) rtcReleaseScene(all.rtc);
         if (device) rtcReleaseDevice(device);
     }
 
@@ -266,8 +280,11 @@ struct RayCore::Impl {
     }
 
     void Build(const Scene& s);
-    void BuildPolygons();
-    void BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,
+    void BuildLayer(Layer& layer, const std::vector<bool>& leftOut);
+    void BuildPolygons(Layer& layer, const std::vector<bool>& leftOut);
+    /// Float boxes of user-geometry surfaces, relative to the centre.
+    std::vector<RTCBounds> UserBoundsOf(const std::vector<int>& surfaces) const;
+    void BuildUserKind(UserKind& kind, Layer& layer, RTCIntersectFunctionN intersect,
                        RTCOccludedFunctionN occluded);
     Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax, RTCRay& ray) const;
 
@@ -283,9 +300,8 @@ struct RayCore::Impl {
     template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
 
-    /// Exact t of quad primID's polygon plane, if it is a valid candidate.
-    static std::optional<double> PlaneT(const Query& q, unsigned primID) {
-        const PolygonPlane& p = q.impl->quads[primID];
+    /// Exact t of polygon plane p, if it is a valid candidate.
+    static std::optional<double> PlaneT(const Query& q, const PolygonPlane& p) {
         const double denom = Dot(p.normal, q.dir);
         if (std::fabs(denom) <= kFtiny) return std::nullopt;  // parallel, as o_face.c
         const double t = (p.offset - Dot(p.normal, q.org)) / denom;
@@ -302,8 +318,9 @@ void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* ar
     RT_DCHECK(args->N == 1);
     auto& q = *reinterpret_cast<Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
-    const auto t = PlaneT(q, hit->primID);
-    const PolygonPlane& plane = q.impl->quads[hit->primID];
+    const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
+    const PolygonPlane& plane = quads[hit->primID];
+    const auto t = PlaneT(q, plane);
     if (!t || !q.Offer(*t, plane.surface, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
         return;
@@ -315,7 +332,8 @@ void RayCore::Impl::PolygonOccludedFilter(const RTCFilterFunctionNArguments* arg
     RT_DCHECK(args->N == 1);
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
-    if (!PlaneT(q, hit->primID)) args->valid[0] = 0;
+    const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
+    if (!PlaneT(q, quads[hit->primID])) args->valid[0] = 0;
 }
 
 void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
@@ -425,31 +443,50 @@ void RayCore::Impl::Build(const Scene& s) {
         throw Error(Error::Kind::Internal,
                     "Embree build lacks filter functions or culls back faces");
     }
-    rtcScene = rtcNewScene(device);
+    BuildLayer(all, std::vector<bool>(s.surfaces.size(), false));
+
+    const bool localSources = std::any_of(s.surfaces.begin(), s.surfaces.end(), [&](const Surface& f) {
+        return f.type != SurfaceType::Source && f.material >= 0 &&
+               IsLightType(s.materials[static_cast<size_t>(f.material)].type);
+    });
+    if (!localSources) return;
+    // Hit points carry rounding errors of a few ulps of the coordinates,
+    // which the tolerance exceeds a thousandfold; 1 % of it keeps them inside.
+    bounding = FindBoundingPolygons(s, 0.01 * tolerance);
+    if (bounding.surfaces.empty()) return;
+    std::vector<bool> leftOut(s.surfaces.size(), false);
+    for (int i : bounding.surfaces) leftOut[static_cast<size_t>(i)] = true;
+    BuildLayer(interior, leftOut);
+}
+
+void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
+    layer.rtc = rtcNewScene(device);
     Check("rtcNewScene");
     // ROBUST: watertight triangle tests, so rays through shared edges and
     // vertices never slip between triangles.
-    rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(layer.rtc, RTC_SCENE_FLAG_ROBUST);
     // The scene never changes after loading and is traced millions of times:
     // spend more on the build for faster traversal.
-    rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(layer.rtc, RTC_BUILD_QUALITY_HIGH);
 
-    BuildPolygons();
-    BuildUserKind(spheres, &UserIntersect<Sphere, IntersectSphere>,
+    BuildPolygons(layer, leftOut);
+    BuildUserKind(spheres, layer, &UserIntersect<Sphere, IntersectSphere>,
                   &UserOccluded<Sphere, IntersectSphere>);
-    BuildUserKind(cones, &UserIntersect<Cone, IntersectCone>, &UserOccluded<Cone, IntersectCone>);
-    BuildUserKind(rings, &UserIntersect<Ring, IntersectRing>, &UserOccluded<Ring, IntersectRing>);
+    BuildUserKind(cones, layer, &UserIntersect<Cone, IntersectCone>,
+                  &UserOccluded<Cone, IntersectCone>);
+    BuildUserKind(rings, layer, &UserIntersect<Ring, IntersectRing>,
+                  &UserOccluded<Ring, IntersectRing>);
 
-    rtcCommitScene(rtcScene);
+    rtcCommitScene(layer.rtc);
     Check("rtcCommitScene");
 }
 
-void RayCore::Impl::BuildPolygons() {
+void RayCore::Impl::BuildPolygons(Layer& layer, const std::vector<bool>& leftOut) {
     std::vector<float> vertices;
     std::vector<unsigned> indices;
     for (size_t i = 0; i < scene->surfaces.size(); ++i) {
         const Surface& surface = scene->surfaces[i];
-        if (surface.type != SurfaceType::Polygon) continue;
+        if (surface.type != SurfaceType::Polygon || leftOut[i]) continue;
         const auto& polygon = std::get<Polygon>(surface.shape);
         const auto base = static_cast<unsigned>(vertices.size() / 3);
         // Same double -> same float: polygons sharing a vertex share it
@@ -461,10 +498,10 @@ void RayCore::Impl::BuildPolygons() {
         }
         for (const auto& quad : PairTriangles(TriangulatePolygon(polygon))) {
             for (int k : quad) indices.push_back(base + static_cast<unsigned>(k));
-            quads.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
+            layer.quads.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
         }
     }
-    if (quads.empty()) return;
+    if (layer.quads.empty()) return;
 
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
     Check("rtcNewGeometry");
@@ -474,7 +511,7 @@ void RayCore::Impl::BuildPolygons() {
                                                            vertices.size() / 3));
     auto* ib = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                4 * sizeof(unsigned), quads.size()));
+                                4 * sizeof(unsigned), layer.quads.size()));
     if (!vb || !ib) {
         rtcReleaseGeometry(geometry);
         Check("rtcSetNewGeometryBuffer");
@@ -482,19 +519,36 @@ void RayCore::Impl::BuildPolygons() {
     }
     std::copy(vertices.begin(), vertices.end(), vb);
     std::copy(indices.begin(), indices.end(), ib);
+    rtcSetGeometryUserData(geometry, &layer.quads);
     rtcSetGeometryIntersectFilterFunction(geometry, &PolygonIntersectFilter);
     rtcSetGeometryOccludedFilterFunction(geometry, &PolygonOccludedFilter);
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(rtcScene, geometry);
+    rtcAttachGeometry(layer.rtc, geometry);
     rtcReleaseGeometry(geometry);
     Check("polygon mesh");
 }
 
-void RayCore::Impl::BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersect,
+void RayCore::Impl::BuildUserKind(UserKind& kind, Layer& layer, RTCIntersectFunctionN intersect,
                                   RTCOccludedFunctionN occluded) {
     if (kind.surfaces.empty()) return;
-    kind.bounds.reserve(kind.surfaces.size());
-    for (int surface : kind.surfaces) {
+    if (kind.bounds.empty()) kind.bounds = UserBoundsOf(kind.surfaces);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    Check("rtcNewGeometry");
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(kind.surfaces.size()));
+    rtcSetGeometryUserData(geometry, &kind);
+    rtcSetGeometryBoundsFunction(geometry, &UserBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(layer.rtc, geometry);
+    rtcReleaseGeometry(geometry);
+    Check("user geometry");
+}
+
+std::vector<RTCBounds> RayCore::Impl::UserBoundsOf(const std::vector<int>& surfaces) const {
+    std::vector<RTCBounds> bounds;
+    bounds.reserve(surfaces.size());
+    for (int surface : surfaces) {
         const Bounds3 b = ShapeBounds(scene->surfaces[static_cast<size_t>(surface)]);
         const Vec3 lo = b.lo - centre, hi = b.hi - centre;
         // Padding covers the float ray's deviation from the exact ray, so a
@@ -508,19 +562,9 @@ void RayCore::Impl::BuildUserKind(UserKind& kind, RTCIntersectFunctionN intersec
         rb.upper_y = RoundUp(hi.y + pad);
         rb.upper_z = RoundUp(hi.z + pad);
         rb.align0 = rb.align1 = 0;
-        kind.bounds.push_back(rb);
+        bounds.push_back(rb);
     }
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    Check("rtcNewGeometry");
-    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(kind.surfaces.size()));
-    rtcSetGeometryUserData(geometry, &kind);
-    rtcSetGeometryBoundsFunction(geometry, &UserBounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, intersect);
-    rtcSetGeometryOccludedFunction(geometry, occluded);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(rtcScene, geometry);
-    rtcReleaseGeometry(geometry);
-    Check("user geometry");
+    return bounds;
 }
 
 // ---------------------------------------------------------------------------
@@ -599,7 +643,7 @@ std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->rtcScene, &q.rtc, &rayhit);
+    rtcIntersect1(impl_->all.rtc, &q.rtc, &rayhit);
     // The answer is the Query's best, not rayhit.hit: the callbacks may have
     // accepted later coincident candidates that lost the priority rule.
     if (q.best < 0) return std::nullopt;
@@ -632,7 +676,11 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const 
     const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
     RTCRay ray;
     Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
-    rtcOccluded1(impl_->rtcScene, &q.rtc, &ray);
+    // Between two points inside every bounding plane the bounding polygons
+    // cannot be in the way (raycore/hull.h).
+    const bool inside = impl_->interior.rtc && tmaxIn > 0 && impl_->bounding.Inside(orgIn) &&
+                        impl_->bounding.Inside(orgIn + dir * tmaxIn);
+    rtcOccluded1(inside ? impl_->interior.rtc : impl_->all.rtc, &q.rtc, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
 

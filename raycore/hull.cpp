@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#include "raycore/hull.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "raycore/shapes.h"
+
+namespace rt {
+namespace {
+
+/// Points whose inner side decides for every surface: polygon vertices, and
+/// the eight corners of the bounding box of any other shape (the box holds
+/// the shape, so if its corners are inside, so is the shape). Distant sources
+/// are not geometry.
+std::vector<Vec3> ExtremePoints(const Scene& scene) {
+    std::vector<Vec3> points;
+    for (const Surface& surface : scene.surfaces) {
+        if (surface.type == SurfaceType::Source) continue;
+        if (const auto* polygon = std::get_if<Polygon>(&surface.shape)) {
+            points.insert(points.end(), polygon->vertices.begin(), polygon->vertices.end());
+            continue;
+        }
+        const Bounds3 b = ShapeBounds(surface);
+        for (int corner = 0; corner < 8; ++corner) {
+            points.push_back({corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
+                              corner & 4 ? b.hi.z : b.lo.z});
+        }
+    }
+    return points;
+}
+
+/// The inner half-space of `polygon`'s plane if every point lies on one side
+/// of it (within `margin`), else nothing.
+std::optional<InnerHalfSpace> BoundingSide(const Polygon& polygon,
+                                           const std::vector<Vec3>& points, double margin) {
+    bool front = true, back = true;  // every point so far on that side
+    for (const Vec3& x : points) {
+        const double s = Dot(polygon.normal, x) - polygon.offset;
+        if (s < -margin) front = false;
+        if (s > margin) back = false;
+        if (!front && !back) return std::nullopt;
+    }
+    if (front) return InnerHalfSpace{polygon.normal, polygon.offset};
+    return InnerHalfSpace{-polygon.normal, -polygon.offset};
+}
+
+}  // namespace
+
+BoundingPolygons FindBoundingPolygons(const Scene& scene, double margin, int maxPlanes) {
+    BoundingPolygons result;
+    result.margin = margin;
+    std::vector<int> candidates;
+    for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
+        if (std::holds_alternative<Polygon>(scene.surfaces[static_cast<size_t>(i)].shape)) {
+            candidates.push_back(i);
+        }
+    }
+    if (candidates.empty() || maxPlanes <= 0) return result;
+    const auto area = [&](int i) {
+        return std::get<Polygon>(scene.surfaces[static_cast<size_t>(i)].shape).area;
+    };
+    const size_t checks = std::min(candidates.size(), 4 * static_cast<size_t>(maxPlanes));
+    std::partial_sort(candidates.begin(), candidates.begin() + static_cast<long>(checks),
+                      candidates.end(), [&](int a, int b) {
+                          return area(a) != area(b) ? area(a) > area(b) : a < b;
+                      });
+    candidates.resize(checks);
+
+    const std::vector<Vec3> points = ExtremePoints(scene);
+    for (int i : candidates) {
+        const auto& polygon = std::get<Polygon>(scene.surfaces[static_cast<size_t>(i)].shape);
+        const auto side = BoundingSide(polygon, points, margin);
+        if (!side) continue;
+        // Coplanar bounding polygons share one plane.
+        const auto same = std::find_if(result.planes.begin(), result.planes.end(),
+                                       [&](const InnerHalfSpace& p) {
+                                           return Dot(p.normal, side->normal) > 1 - 1e-12 &&
+                                                  std::fabs(p.offset - side->offset) <= margin;
+                                       });
+        if (same == result.planes.end()) {
+            if (static_cast<int>(result.planes.size()) >= maxPlanes) continue;
+            result.planes.push_back(*side);
+        }
+        result.surfaces.push_back(i);
+    }
+    std::sort(result.surfaces.begin(), result.surfaces.end());
+    return result;
+}
+
+}  // namespace rt

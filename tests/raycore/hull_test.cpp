@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+//
+// The bounding polygons (raycore/hull.h), and the occlusion tests that leave
+// them out, against brute force.
+#include "raycore/hull.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "raycore/raycore.h"
+#include "tests/raycore/test_scenes.h"
+
+namespace rt {
+namespace {
+
+using testing::SceneBuilder;
+
+constexpr double kMargin = 1e-8;
+
+/// A 4 x 5 x 3 room (six walls, ids 0-5), a block standing on the floor
+/// (6-11, its bottom face 6 in the floor's plane), a lamp just below the
+/// ceiling (12) and a sphere (13).
+Scene Room(bool withLamp = true) {
+    SceneBuilder b;
+    const int white = b.AddMaterial(MaterialType::Plastic, "white");
+    const int lamp = b.AddMaterial(MaterialType::Light, "lamp");
+    b.AddBox({0, 0, 0}, {4, 5, 3}, white);
+    b.AddBox({1, 1, 0}, {2, 2.5, 1.2}, white);
+    b.AddPolygon({{1.5, 2, 2.99}, {2.5, 2, 2.99}, {2.5, 3, 2.99}, {1.5, 3, 2.99}},
+                 withLamp ? lamp : white);
+    b.AddSphere({3, 3.5, 1}, 0.5, false, white);
+    return b.scene();
+}
+
+TEST(BoundingPolygons, RoomWallsAndCoplanarFacesOnly) {
+    const BoundingPolygons bounds = FindBoundingPolygons(Room(), kMargin);
+    // The six walls and the block's bottom, which lies in the floor's plane;
+    // not the block's other faces, the lamp or anything else.
+    EXPECT_EQ(bounds.surfaces, (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
+    EXPECT_EQ(bounds.planes.size(), 6u);
+    EXPECT_TRUE(bounds.Inside({2, 2.5, 1.5}));
+    EXPECT_TRUE(bounds.Inside({0, 0, 0}));             // a corner is on every plane
+    EXPECT_TRUE(bounds.Inside({2, 2.5, -0.5 * kMargin}));
+    EXPECT_FALSE(bounds.Inside({2, 2.5, -2 * kMargin}));  // below the floor
+    EXPECT_FALSE(bounds.Inside({4.5, 2.5, 1.5}));
+    // Every inner side points into the room.
+    for (const InnerHalfSpace& p : bounds.planes) EXPECT_GT(p.Distance({2, 2.5, 1.5}), 0.9);
+}
+
+TEST(BoundingPolygons, OnlyPolygonsWithEverythingOnOneSide) {
+    SceneBuilder b;
+    b.AddPolygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    // Vertical, through the middle of the square: each has points on both
+    // sides of the other's plane.
+    b.AddPolygon({{0.5, -1, -0.5}, {0.5, 2, -0.5}, {0.5, 2, 2}, {0.5, -1, 2}});
+    EXPECT_TRUE(FindBoundingPolygons(b.scene(), kMargin).surfaces.empty());
+    // A triangle below everything bounds the scene from below.
+    b.AddPolygon({{0, 0, -1}, {1, 0, -1}, {1, 1, -1}});
+    const BoundingPolygons bounds = FindBoundingPolygons(b.scene(), kMargin);
+    EXPECT_EQ(bounds.surfaces, (std::vector<int>{2}));
+    ASSERT_EQ(bounds.planes.size(), 1u);
+    EXPECT_GT(bounds.planes[0].normal.z, 0.999);
+}
+
+TEST(BoundingPolygons, PlanesAreCapped) {
+    SceneBuilder b;
+    // A convex prism with 20 sides: every face bounds it.
+    for (int k = 0; k < 20; ++k) {
+        const double a0 = 2 * kPi * k / 20, a1 = 2 * kPi * (k + 1) / 20;
+        const Vec3 p0{std::cos(a0), std::sin(a0), 0}, p1{std::cos(a1), std::sin(a1), 0};
+        b.AddPolygon({p0, p1, p1 + Vec3{0, 0, 1}, p0 + Vec3{0, 0, 1}});
+    }
+    const BoundingPolygons bounds = FindBoundingPolygons(b.scene(), kMargin, 8);
+    EXPECT_EQ(bounds.planes.size(), 8u);
+    EXPECT_EQ(bounds.surfaces.size(), 8u);
+}
+
+/// Brute-force occlusion: any surface hit in (tol, tmax).
+bool BruteOccluded(const RayCore& core, const Scene& scene, const Vec3& org, const Vec3& dir,
+                   double tmax) {
+    for (int s = 0; s < static_cast<int>(scene.surfaces.size()); ++s) {
+        const auto h = core.IntersectSurface(s, org, dir);
+        if (h && h->t < tmax) return true;
+    }
+    return false;
+}
+
+/// Brute force, unless moving the segment sideways by 1e-5 changes the
+/// answer: a segment that grazes an edge (the double test counts points within
+/// 1e-6 of an edge as inside) or runs along a face has no robust answer, and
+/// Embree's float test, whose outcome there also depends on the hierarchy's
+/// boxes, may then differ either way. The moved segments are 1e-4 shorter at
+/// each end, so that moving does not push their ends into the surfaces they
+/// start and end on.
+std::optional<bool> RobustBruteOccluded(const RayCore& core, const Scene& scene, const Vec3& org,
+                                        const Vec3& dir, double tmax) {
+    const bool answer = BruteOccluded(core, scene, org, dir, tmax);
+    const Frame frame = Frame::Around(dir);
+    for (const Vec3& side : {frame.u, -frame.u, frame.v, -frame.v}) {
+        if (BruteOccluded(core, scene, org + side * 1e-5 + dir * 1e-4, dir, tmax - 2e-4) !=
+            answer) {
+            return std::nullopt;
+        }
+    }
+    return answer;
+}
+
+/// Shadow-ray-like segments between points on the room's surfaces, including
+/// the walls the interior layer leaves out, points on edges and in corners,
+/// and from points outside the room (which must still see the walls).
+TEST(BoundingPolygons, OcclusionAgreesWithBruteForce) {
+    const Scene scene = Room();
+    const RayCore core(scene);
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> u(0, 1);
+    const auto onSurface = [&]() {
+        // A closest hit of a random ray from inside the room.
+        for (;;) {
+            const Vec3 org{0.1 + 3.8 * u(rng), 0.1 + 4.8 * u(rng), 0.1 + 2.8 * u(rng)};
+            std::normal_distribution<double> g;
+            const Vec3 dir = Normalize(Vec3{g(rng), g(rng), g(rng)});
+            if (auto h = core.Intersect(org, dir, 0)) return h->point;
+        }
+    };
+    const std::vector<Vec3> special = {{0, 0, 0},   {4, 5, 3},   {2, 0, 1.5}, {0, 2.5, 0},
+                                       {1, 1, 0},   {2, 2.5, 0}, {2, 2.5, -1}, {5, 2, 1},
+                                       {2, -1, 2},  {2, 2, 3.5}};
+    int checked = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 a = i < 2000 ? special[static_cast<size_t>(i) % special.size()] : onSurface();
+        const Vec3 b = i % 3 == 0 ? Vec3{1.5 + u(rng), 2 + u(rng), 2.99} : onSurface();
+        const Vec3 d = b - a;
+        const double length = Length(d);
+        if (length < 1e-3) continue;
+        const Vec3 dir = d / length;
+        const double tmax = length * (1 - 1e-7);
+        const auto expected = RobustBruteOccluded(core, scene, a, dir, tmax);
+        if (!expected) continue;
+        EXPECT_EQ(core.Occluded(a, dir, tmax), *expected) << a << " -> " << b;
+        ++checked;
+        blocked += *expected;
+    }
+    EXPECT_GT(checked, 15000);
+    EXPECT_GT(blocked, 1000);  // the block, the sphere and the walls from outside do block
+}
+
+}  // namespace
+}  // namespace rt
