@@ -88,17 +88,61 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
 
 namespace {
 
-/// Cosine-weighted direction in division (t, p) with jitter (xi0, xi1) ∈ [0,1)²:
-/// sin²θ is uniform within the row, φ within the column (§4.12).
-Vec3 DivisionDirection(const Frame& frame, int t, int p, int rows, int columns, double xi0,
-                       double xi1) {
-    const double sin2 = (t + xi0) / rows;
-    const double sinTheta = std::sqrt(sin2);
-    const double cosTheta = std::sqrt(1.0 - sin2);
-    const double phi = 2.0 * kPi * (p + xi1) / columns;
-    return frame.u * (std::cos(phi) * sinTheta) + frame.v * (std::sin(phi) * sinTheta) +
-           frame.n * cosTheta;
+/// cos and sin of x for 0 <= x <= π/4, by their Taylor series to x^16
+/// (error below 2e-16): a fraction of the cost of std::sin and std::cos,
+/// which took 4 % of a cornell -ab 2 run at one call per hemisphere ray.
+void SinCosSmall(double x, double& c, double& s) {
+    const double x2 = x * x;
+    s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
+             x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000))))))));
+    c = 1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 +
+        x2 * (-1.0 / 3628800 + x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 +
+        x2 * (1.0 / 20922789888000))))))));
 }
+
+/// Cosine-weighted directions in the divisions of a hemisphere: sin²θ is
+/// uniform within a row, φ within a column (§4.12). The azimuth of each
+/// column's start is tabulated once per hemisphere; the jitter within the
+/// column (at most π/4 wide from 8 columns up) is a small rotation from it.
+class DivisionDirections {
+  public:
+    DivisionDirections(const Frame& frame, int rows, int columns)
+        : frame_(frame), rows_(rows), columns_(columns), small_(columns >= 8) {
+        if (!small_) return;
+        start_.resize(static_cast<size_t>(columns));
+        for (int p = 0; p < columns; ++p) {
+            const double phi = 2.0 * kPi * p / columns;
+            start_[static_cast<size_t>(p)] = {std::cos(phi), std::sin(phi)};
+        }
+    }
+
+    /// The direction in division (t, p) with jitter (xi0, xi1) in [0,1)².
+    Vec3 operator()(int t, int p, double xi0, double xi1) const {
+        const double sin2 = (t + xi0) / rows_;
+        const double sinTheta = std::sqrt(sin2);
+        const double cosTheta = std::sqrt(1.0 - sin2);
+        double cosPhi, sinPhi;
+        if (small_) {
+            double c, s;
+            SinCosSmall(2.0 * kPi * xi1 / columns_, c, s);
+            const auto [c0, s0] = start_[static_cast<size_t>(p)];
+            cosPhi = c0 * c - s0 * s;
+            sinPhi = s0 * c + c0 * s;
+        } else {
+            const double phi = 2.0 * kPi * (p + xi1) / columns_;
+            cosPhi = std::cos(phi);
+            sinPhi = std::sin(phi);
+        }
+        return frame_.u * (cosPhi * sinTheta) + frame_.v * (sinPhi * sinTheta) +
+               frame_.n * cosTheta;
+    }
+
+  private:
+    const Frame& frame_;
+    int rows_, columns_;
+    bool small_;  // columns narrow enough for SinCosSmall
+    std::vector<std::pair<double, double>> start_;  // cos, sin of each column's start
+};
 
 /// The hemisphere frame around unit n. Radiance ≤ 4.2 used the fixed
 /// getperpendicular() axis, so neighbouring records shared one division
@@ -270,6 +314,7 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     const int columns = h.columns;
 
     DivisionGrid divs(rows, columns);
+    const DivisionDirections direction(h.frame, rows, columns);
     int failed = 0;
     for (int t = 0; t < rows; ++t) {
         for (int p = 0; p < columns; ++p) {
@@ -277,7 +322,7 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
             const double xi1 = rng.Uniform();
             ++h.raysTraced;
             const std::optional<Traced> s =
-                TraceOne(trace, DivisionDirection(h.frame, t, p, rows, columns, xi0, xi1));
+                TraceOne(trace, direction(t, p, xi0, xi1));
             if (!s) {
                 ++failed;
                 continue;
@@ -316,7 +361,7 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
                 const double xi1 = rng.Uniform();
                 ++h.raysTraced;
                 const std::optional<Traced> s =
-                    TraceOne(trace, DivisionDirection(h.frame, t, p, rows, columns, xi0, xi1));
+                    TraceOne(trace, direction(t, p, xi0, xi1));
                 if (!s) break;  // keeps the samples it has
                 AddSuperSample(divs[i], *s);
             }
