@@ -86,6 +86,24 @@ BoundingPolygons FindBoundingPolygons(const Scene& scene, double margin, int max
         result.surfaces.push_back(i);
     }
     std::sort(result.surfaces.begin(), result.surfaces.end());
+    for (const InnerHalfSpace& p : result.planes) {
+        // An axis-aligned plane, inner side +axis (x[axis] >= offset) or
+        // -axis (x[axis] <= -offset), goes into the box.
+        int axis = -1;
+        for (int k = 0; k < 3; ++k) {
+            if (std::fabs(p.normal[k]) == 1.0 && p.normal[(k + 1) % 3] == 0.0 &&
+                p.normal[(k + 2) % 3] == 0.0) {
+                axis = k;
+            }
+        }
+        if (axis < 0) {
+            result.oblique.push_back(p);
+        } else if (p.normal[axis] > 0) {
+            result.boxLo[axis] = std::max(result.boxLo[axis], p.offset - margin);
+        } else {
+            result.boxHi[axis] = std::min(result.boxHi[axis], -p.offset + margin);
+        }
+    }
     return result;
 }
 

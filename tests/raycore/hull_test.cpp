@@ -50,6 +50,26 @@ TEST(BoundingPolygons, RoomWallsAndCoplanarFacesOnly) {
     EXPECT_FALSE(bounds.Inside({4.5, 2.5, 1.5}));
     // Every inner side points into the room.
     for (const InnerHalfSpace& p : bounds.planes) EXPECT_GT(p.Distance({2, 2.5, 1.5}), 0.9);
+    // All six are axis-aligned: Inside() tests them as a box.
+    EXPECT_TRUE(bounds.oblique.empty());
+}
+
+TEST(BoundingPolygons, ObliquePlanesAreTestedOneByOne) {
+    // A wedge: floor, two vertical walls and a sloping roof x + z <= 2.
+    SceneBuilder b;
+    b.AddPolygon({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}});
+    b.AddPolygon({{0, 0, 0}, {0, 0, 2}, {0, 1, 2}, {0, 1, 0}});
+    b.AddPolygon({{0, 0, 2}, {2, 0, 0}, {2, 1, 0}, {0, 1, 2}});
+    b.AddPolygon({{0, 0, 0}, {2, 0, 0}, {0, 0, 2}});
+    b.AddPolygon({{0, 1, 0}, {0, 1, 2}, {2, 1, 0}});
+    const BoundingPolygons bounds = FindBoundingPolygons(b.scene(), kMargin);
+    EXPECT_EQ(bounds.surfaces.size(), 5u);
+    ASSERT_EQ(bounds.oblique.size(), 1u);
+    EXPECT_TRUE(bounds.Inside({0.5, 0.5, 0.5}));
+    EXPECT_TRUE(bounds.Inside({1, 0.5, 1}));    // on the roof
+    EXPECT_FALSE(bounds.Inside({1, 0.5, 1.01}));  // just above it
+    EXPECT_FALSE(bounds.Inside({-0.01, 0.5, 0.5}));
+    EXPECT_FALSE(bounds.Inside({0.5, 1.01, 0.5}));
 }
 
 TEST(BoundingPolygons, OnlyPolygonsWithEverythingOnOneSide) {
