@@ -53,7 +53,9 @@ BoundingPolygons FindBoundingPolygons(const Scene& scene, double margin, int max
     result.margin = margin;
     std::vector<int> candidates;
     for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
-        if (std::holds_alternative<Polygon>(scene.surfaces[static_cast<size_t>(i)].shape)) {
+        const auto* polygon = std::get_if<Polygon>(&scene.surfaces[static_cast<size_t>(i)].shape);
+        // A plane that is not finite bounds nothing (and can never be hit).
+        if (polygon && IsFinite(polygon->normal) && std::isfinite(polygon->offset)) {
             candidates.push_back(i);
         }
     }
