@@ -2,6 +2,7 @@
 # Errors and wall times of the indirect calculation against analytic answers
 # and real-Radiance references (issue "Ambient calculation"). Rerun with:
 #   bench/ambient_accuracy.sh [path/to/rtrace]
+#   SEEDS="0 1 2 3 4 5 6 7" bench/ambient_accuracy.sh   # the spread over seeds
 # Error = relative error of luminance (0.265 R + 0.670 G + 0.065 B), as
 # scenes/README.md defines it; times are wall clock of one rtrace process.
 set -euo pipefail
@@ -54,10 +55,14 @@ run() {  # run LABEL SCENE POINTS REF OPTIONS...
 }
 
 settings=(-I -ad 1024 -as 512 -aa .1 -ar 256)
-echo "== against converged references (scenes/*/ref)"
-run "cornell floor -ab 2" scenes/cornell/cornell.rad scenes/cornell/floor.pts \
-    scenes/cornell/ref/floor_I_ab2.txt -ab 2 "${settings[@]}"
-run "cornell edges -ab 2" scenes/cornell/cornell.rad scenes/cornell/edges.pts \
-    scenes/cornell/ref/edges_I_ab2.txt -ab 2 "${settings[@]}"
-run "daylit_room workplane -ab 4" scenes/daylit_room/daylit_room.rad scenes/daylit_room/workplane.pts \
-    scenes/daylit_room/ref/workplane_I_ab4.txt -ab 4 "${settings[@]}"
+# One seed is one draw of the Monte Carlo error: SEEDS="0 1 2 3" repeats every
+# case with each -seed (default: the default seed 0 only).
+for seed in ${SEEDS:-0}; do
+  echo "== against converged references (scenes/*/ref), -seed $seed"
+  run "cornell floor -ab 2" scenes/cornell/cornell.rad scenes/cornell/floor.pts \
+      scenes/cornell/ref/floor_I_ab2.txt -ab 2 "${settings[@]}" -seed "$seed"
+  run "cornell edges -ab 2" scenes/cornell/cornell.rad scenes/cornell/edges.pts \
+      scenes/cornell/ref/edges_I_ab2.txt -ab 2 "${settings[@]}" -seed "$seed"
+  run "daylit_room workplane -ab 4" scenes/daylit_room/daylit_room.rad scenes/daylit_room/workplane.pts \
+      scenes/daylit_room/ref/workplane_I_ab4.txt -ab 4 "${settings[@]}" -seed "$seed"
+done
