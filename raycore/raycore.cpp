@@ -332,7 +332,8 @@ void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* ar
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     const PolygonPlane& plane = quads[hit->primID];
     double num, denom;
-    if (!PlaneCandidate(q, plane, num, denom) || !q.Offer(num / denom, plane.surface, plane.normal)) {
+    if (!PlaneCandidate(q, plane, num, denom) ||
+        !q.Offer(num / denom, plane.surface, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
         return;
     }
@@ -457,10 +458,11 @@ void RayCore::Impl::Build(const Scene& s) {
     }
     BuildLayer(all, std::vector<bool>(s.surfaces.size(), false));
 
-    const bool localSources = std::any_of(s.surfaces.begin(), s.surfaces.end(), [&](const Surface& f) {
-        return f.type != SurfaceType::Source && f.material >= 0 &&
-               IsLightType(s.materials[static_cast<size_t>(f.material)].type);
-    });
+    const bool localSources =
+        std::any_of(s.surfaces.begin(), s.surfaces.end(), [&](const Surface& f) {
+            return f.type != SurfaceType::Source && f.material >= 0 &&
+                   IsLightType(s.materials[static_cast<size_t>(f.material)].type);
+        });
     if (!localSources) return;
     // Hit points carry rounding errors of a few ulps of the coordinates,
     // which the tolerance exceeds a thousandfold; 1 % of it keeps them inside.
