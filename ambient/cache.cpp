@@ -54,7 +54,8 @@ bool AmbientCache::Add(const AmbientRecord& record) {
     return true;
 }
 
-std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* recordsUsed) const {
+std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* recordsUsed,
+                                             FunctionRef<bool(const AmbientRecord&)> hidden) const {
     const double a = accuracy_;
     // A record whose plane lies in front of the query point by more than this
     // is on another surface (Radiance's "behind" tolerance).
@@ -93,6 +94,8 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         double f = 1.0 + Dot(delta, u * r.posGradient[0] + v * r.posGradient[1]) +
                    Dot(Cross(r.normal, q.shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
         if (!(f >= kMinExtrapolation)) return;
+        // Last, because it may trace a ray.
+        if (hidden(r)) return;
         f = std::min(f, kMaxExtrapolation);
         const double w = eps > 1e-3 ? 1.0 / eps : 1e3;
         sum += r.value * (w * f);

@@ -19,6 +19,7 @@
 
 #include "ambient/limits.h"
 #include "ambient/record.h"
+#include "core/function_ref.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "octree/sphere_octree.h"
@@ -53,7 +54,14 @@ public:
         return Interpolate(query, &used);
     }
     /// As above; `recordsUsed` receives how many records contributed.
-    std::optional<Rgb> Interpolate(const AmbientQuery& query, int* recordsUsed) const;
+    std::optional<Rgb> Interpolate(const AmbientQuery& query, int* recordsUsed) const {
+        return Interpolate(query, recordsUsed, [](const AmbientRecord&) { return false; });
+    }
+    /// As above; `hidden` is asked last about each record that passed every
+    /// other test, and returning true rejects it (the leak test, ambient/leak.h).
+    /// It runs under the cache's read lock and must not call into the cache.
+    std::optional<Rgb> Interpolate(const AmbientQuery& query, int* recordsUsed,
+                                   FunctionRef<bool(const AmbientRecord&)> hidden) const;
 
     std::size_t size() const;
     /// A copy of every record, in insertion order.

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "ambient/limits.h"
 #include "ambient/record.h"
@@ -59,6 +60,11 @@ struct Hemisphere {
     Frame frame;              // u, v, n used for the divisions
     Vec3 posGradient;         // relative translational gradient, tangent to n (1/length)
     Vec3 dirGradient;         // relative rotational gradient, tangent to n (1/radian)
+    /// For the leak test's corral bits (ambient/leak.h), when complete: per
+    /// column, the nearest hit (largest 1/d) in its division next to the
+    /// horizon; and the mean nearest 1/d of the divisions within 30° of n.
+    std::vector<double> horizonInverseDistance;
+    double zenithInverseDistance = 0;
 };
 
 /// Ward's division counts for `options` (radiance-notes.md §4.12): rows

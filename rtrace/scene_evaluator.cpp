@@ -112,6 +112,7 @@ public:
             const RenderStats& t = r->Stats();
             s.raysTraced += t.raysTraced;
             s.shadowRays += t.shadowRays;
+            s.leakRays += t.leakRays;
             s.ambientLookups += t.ambientLookups;
             s.ambientHits += t.ambientHits;
             s.hemispheres += t.hemispheres;
@@ -135,14 +136,16 @@ public:
         char buf[360];
         std::snprintf(buf, sizeof buf,
                       " (+%zu from the ambient file), %llu lookups, %.1f%% interpolated, %llu "
-                      "hemispheres, %llu rays traced + %llu shadow rays; thread time %.2f s "
+                      "hemispheres, %llu rays traced + %llu shadow rays + %llu leak-test rays; "
+                      "thread time %.2f s "
                       "sampling, %.2f s lookups, %.2f s direct",
                       recordsLoaded_, static_cast<unsigned long long>(s.ambientLookups),
                       s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups)
                                        : 0.0,
                       static_cast<unsigned long long>(s.hemispheres),
                       static_cast<unsigned long long>(s.raysTraced),
-                      static_cast<unsigned long long>(s.shadowRays), s.secondsSampling,
+                      static_cast<unsigned long long>(s.shadowRays),
+                      static_cast<unsigned long long>(s.leakRays), s.secondsSampling,
                       s.secondsLookup, s.secondsDirect);
         return out + buf;
     }

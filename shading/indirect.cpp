@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "ambient/leak.h"
 #include "shading/integrator.h"
 
 namespace rt {
@@ -135,7 +136,21 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     ++stats_.ambientLookups;
     int used = 0;
     const double lookupStart = timing_ ? Now() : 0.0;
-    std::optional<Rgb> interpolated = cache_->Interpolate(query, &used);
+    // Radiance 5's leak test: a record that saw a wall nearby in the query's
+    // direction is not used if the wall stands between them.
+    const auto hidden = [&](const AmbientRecord& record) {
+        if (!CorralCovers(record, query.point)) return false;
+        const LeakTest leak = MakeLeakTest(query.point, query.normal, record.position,
+                                           record.normal, scene_.distanceTolerance);
+        switch (leak.outcome) {
+            case LeakTest::Outcome::kVisible: return false;
+            case LeakTest::Outcome::kHidden: return true;
+            case LeakTest::Outcome::kTrace: break;
+        }
+        ++stats_.leakRays;
+        return core_.Occluded(query.point, leak.dir, leak.length);
+    };
+    std::optional<Rgb> interpolated = cache_->Interpolate(query, &used, hidden);
     if (timing_) stats_.secondsLookup += Now() - lookupStart;
     if (auto value = interpolated) {
         ++stats_.ambientHits;
@@ -156,6 +171,10 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     // makeambient() failure, answered with the ambient value.
     if (!h.anySample) return AmbientFallback(coefficient);
     if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
+        const AmbientLimits& limits = cache_->limits();
+        const double a = ambient_.accuracy;
+        record->corral =
+            CorralBits(h, record->radius[0] * a, 1.0 / (limits.minRadius * a + limits.behindMargin));
         if (cache_->Add(*record)) {
             newRecords_.push_back(*record);
             if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {

@@ -12,6 +12,7 @@ namespace rt {
 struct RenderStats {
     std::uint64_t raysTraced = 0;        // every ray sent into the scene (not shadow rays)
     std::uint64_t shadowRays = 0;        // shadow rays actually tested
+    std::uint64_t leakRays = 0;          // leak-test rays of cache lookups (ambient/leak.h)
     std::uint64_t ambientLookups = 0;    // cache queries
     std::uint64_t ambientHits = 0;       // queries answered by interpolation
     std::uint64_t hemispheres = 0;       // hemispheres sampled (records made or not)

@@ -102,3 +102,22 @@ TEST(Reproducibility, RunsRepeatAndIdenticalRaysAreIndependent) {
 }
 
 }  // namespace
+
+/// A closed, unlit room on sky-lit ground: inside, everything is black. The
+/// first and third rays look down at the ground outside, 1 m and 0.7 m from the
+/// room's wall, where records that see mostly open sky get radii of metres;
+/// the second and fourth look at the room's floor inside, 1 cm above the
+/// ground's plane and within those radii. Without the leak test the inside
+/// took the outside records (0.19 and 0.21 at -aa .5, 2026-11-22).
+TEST(LeakTest, ClosedDarkRoomStaysBlack) {
+    for (const char* aa : {"-aa .2", "-aa .5"}) {
+        const auto rows = RunRows(std::string("-ab 1 ") + aa + " -ad 256 -as 0 -ar 64 " + kSource +
+                                      "/tests/data/leak/dark_room.rad",
+                                  "tests/data/leak/rays.txt");
+        ASSERT_EQ(rows.size(), 4u);
+        EXPECT_GT(Luminance(rows[0]), 0.1) << aa;  // the ground outside is lit
+        EXPECT_GT(Luminance(rows[2]), 0.1) << aa;
+        EXPECT_EQ(Luminance(rows[1]), 0.0) << aa;  // the room's floor is not
+        EXPECT_EQ(Luminance(rows[3]), 0.0) << aa;
+    }
+}
