@@ -28,9 +28,12 @@ std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius,
     std::uint32_t bits = 0;
     for (int p = 0; p < columns; ++p) {
         const double inverse = horizon[static_cast<size_t>(p)];
-        // Something hit, not touching the record, inside the validity radius.
-        if (!(inverse > kFtiny) || inverse >= maxInverseDistance) continue;
-        if (inverse * validityRadius <= 1) continue;
+        // Something hit inside the validity radius. Radiance 5 also skips
+        // occluders nearer than minarad·a (1/maxInverseDistance), so a record
+        // 5 cm from a thin wall still served queries 5 cm behind it, in a
+        // closed room that must stay black (tests/data/leak). The test ray is
+        // exact, so flagging those directions too costs rays, never accuracy.
+        if (!(inverse > kFtiny) || inverse * validityRadius <= 1) continue;
         // Every sector the column's azimuth range [φp, φp+1) overlaps.
         const double start = 2 * kPi * p / columns;
         const double end = 2 * kPi * (p + 1) / columns;

@@ -38,10 +38,11 @@ struct LeakTest {
 /// `validityRadius` (its radius times -aa): bit k, for azimuths in
 /// [kπ/16, (k+1)π/16) from u, is set where a sample next to the horizon hit
 /// something closer than the validity radius, that is, where a wall may stand
-/// between the record and a query it would accept. Zero (no test needed) when
-/// the hemisphere is incomplete, when what lies within 30° of the normal is
-/// nearer on average than the validity radius, or nearer than
-/// 1/maxInverseDistance (Radiance's minarad·a + 0.001).
+/// between the record and a query it would accept (however close: unlike
+/// Radiance 5, see leak.cpp). Zero (no test needed) when the hemisphere is
+/// incomplete, when what lies within 30° of the normal is nearer on average
+/// than the validity radius, or nearer than 1/maxInverseDistance (Radiance's
+/// minarad·a + 0.001).
 std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius,
                          double maxInverseDistance);
 

@@ -54,10 +54,10 @@ TEST(Corral, BitsWhereAWallStandsInsideTheValidityRadius) {
     EXPECT_EQ(bits, 1u << 4);
     // 8 columns: column 1 spans [π/4, π/2), sectors 4 to 7.
     EXPECT_EQ(CorralBits(HorizonWall(8, 1, 0.5), 1.0, 100), 0xF0u);
-    // Beyond the validity radius, or touching the record (closer than
-    // 1/maxInverseDistance), a wall sets nothing.
+    // Beyond the validity radius a wall sets nothing; one touching the record
+    // (closer than 1/maxInverseDistance, which Radiance 5 skips) does.
     EXPECT_EQ(CorralBits(HorizonWall(32, 4, 2.0), 1.0, 100), 0u);
-    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 0.005), 1.0, 100), 0u);
+    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 0.005), 1.0, 100), 1u << 4);
     // A ceiling nearer than the validity radius: no corral at all.
     Hemisphere low = HorizonWall(32, 4, 0.5);
     low.zenithInverseDistance = 2;

@@ -121,3 +121,18 @@ TEST(LeakTest, ClosedDarkRoomStaysBlack) {
         EXPECT_EQ(Luminance(rows[3]), 0.0) << aa;
     }
 }
+
+/// The same room with -I sensors 5 cm and more from its wall, outside on the
+/// ground first (their records see the wall 5 cm away) and then inside.
+/// Radiance 5's corral rule ignores occluders that near a record, and the
+/// inside read 1.7-1.85 (2026-11-22); lazyrad flags them.
+TEST(LeakTest, SensorsNearTheWallInsideStayBlack) {
+    for (const char* ar : {"-ar 16", "-ar 64"}) {
+        const auto rows = RunRows(std::string("-I -ab 2 -aa .2 -ad 256 -as 0 ") + ar + " " +
+                                      kSource + "/tests/data/leak/dark_room.rad",
+                                  "tests/data/leak/near_wall.pts");
+        ASSERT_EQ(rows.size(), 9u);
+        for (size_t i = 0; i < 4; ++i) EXPECT_GT(Luminance(rows[i]), 1.0) << ar << " row " << i;
+        for (size_t i = 4; i < 9; ++i) EXPECT_EQ(Luminance(rows[i]), 0.0) << ar << " row " << i;
+    }
+}
