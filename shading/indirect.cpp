@@ -173,8 +173,8 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
         const AmbientLimits& limits = cache_->limits();
         const double a = ambient_.accuracy;
-        record->corral =
-            CorralBits(h, record->radius[0] * a, 1.0 / (limits.minRadius * a + limits.behindMargin));
+        const double nearest = limits.minRadius * a + limits.behindMargin;
+        record->corral = CorralBits(h, record->radius[0] * a, 1.0 / nearest);
         if (cache_->Add(*record)) {
             newRecords_.push_back(*record);
             if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {
