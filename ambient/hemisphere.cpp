@@ -133,8 +133,7 @@ class DivisionDirections {
             cosPhi = std::cos(phi);
             sinPhi = std::sin(phi);
         }
-        return frame_.u * (cosPhi * sinTheta) + frame_.v * (sinPhi * sinTheta) +
-               frame_.n * cosTheta;
+        return frame_.ToWorld({cosPhi * sinTheta, sinPhi * sinTheta, cosTheta});
     }
 
   private:
@@ -368,7 +367,8 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
         }
     }
 
-    if (h.complete) {
+    // Only records use them (their corral bits): not computed without the cache.
+    if (h.complete && options.caching) {
         h.horizonInverseDistance.resize(static_cast<size_t>(columns));
         for (int p = 0; p < columns; ++p) {
             h.horizonInverseDistance[static_cast<size_t>(p)] =

@@ -60,9 +60,9 @@ struct Hemisphere {
     Frame frame;              // u, v, n used for the divisions
     Vec3 posGradient;         // relative translational gradient, tangent to n (1/length)
     Vec3 dirGradient;         // relative rotational gradient, tangent to n (1/radian)
-    /// For the leak test's corral bits (ambient/leak.h), when complete: per
-    /// column, the nearest hit (largest 1/d) in its division next to the
-    /// horizon; and the mean nearest 1/d of the divisions within 30° of n.
+    /// For the leak test's corral bits (ambient/leak.h), when complete and
+    /// caching: per column, the nearest hit (largest 1/d) in its division next
+    /// to the horizon; and the mean nearest 1/d of the divisions within 30° of n.
     std::vector<double> horizonInverseDistance;
     double zenithInverseDistance = 0;
 };

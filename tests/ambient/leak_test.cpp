@@ -39,9 +39,7 @@ TEST(LeakTest, RecordOnASideWallCannotBeReached) {
 Hemisphere HorizonWall(int columns, int wall, double distance) {
     Hemisphere h;
     h.complete = true;
-    h.frame = Frame::Around({0, 0, 1});
-    h.frame.u = {1, 0, 0};
-    h.frame.v = {0, 1, 0};
+    h.frame = Frame{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     h.horizonInverseDistance.assign(static_cast<size_t>(columns), 0.0);
     h.horizonInverseDistance[static_cast<size_t>(wall)] = 1 / distance;
     h.zenithInverseDistance = 0.1;  // a ceiling 10 away
