@@ -45,6 +45,7 @@
 #include "core/conventions.h"
 #include "raycore/hull.h"
 #include "raycore/shapes.h"
+#include "raycore/source_plane.h"
 
 namespace rt {
 
@@ -92,6 +93,30 @@ float RoundUp(double x) {
         f = std::bit_cast<float>(bits);
     }
     return f;
+}
+
+/// True unless the segment from `org` to `end` = org + dir·tmax certainly
+/// misses `box` (slab test; NaNs and rounding err toward "meets").
+bool SegmentMeetsBox(const Vec3& org, const Vec3& end, const Vec3& dir, double tmax,
+                     const Bounds3& box) {
+    // The segment's own box first: no divisions, and enough for most misses.
+    if (std::min(org.x, end.x) > box.hi.x || std::max(org.x, end.x) < box.lo.x ||
+        std::min(org.y, end.y) > box.hi.y || std::max(org.y, end.y) < box.lo.y ||
+        std::min(org.z, end.z) > box.hi.z || std::max(org.z, end.z) < box.lo.z) {
+        return false;
+    }
+    double t0 = 0, t1 = tmax;
+    for (int axis = 0; axis < 3; ++axis) {
+        // A zero component: the segment's box already lies within the slab.
+        if (dir[axis] == 0) continue;
+        const double inv = 1.0 / dir[axis];
+        double a = (box.lo[axis] - org[axis]) * inv, b = (box.hi[axis] - org[axis]) * inv;
+        if (a > b) std::swap(a, b);
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        if (t0 > t1) return false;
+    }
+    return true;
 }
 
 /// First Embree error reported through the device callback. The callback may
@@ -236,6 +261,9 @@ struct RayCore::Impl {
         RTCScene rtc = nullptr;
         /// Per quad primitive (primID); the polygon filters' geometry user data.
         std::vector<PolygonPlane> quads;
+        /// Box around every hit the layer can report (scene coordinates),
+        /// widened by Embree's float error; empty when the layer holds nothing.
+        Bounds3 bounds;
     };
 
     const Scene* scene = nullptr;
@@ -254,8 +282,15 @@ struct RayCore::Impl {
     /// rays are such tests); otherwise interior.rtc stays null.
     Layer interior;
     BoundingPolygons bounding;
+    /// The interior without the polygons in the plane of the light-source
+    /// polygons, for occlusion tests that also stay on one side of that plane
+    /// (see raycore/source_plane.h). Built with the interior when the scene
+    /// has such a plane; otherwise besideSources.rtc stays null.
+    Layer besideSources;
+    std::optional<SourcePlane> sourcePlane;
 
     ~Impl() {
+        if (besideSources.rtc) rtcReleaseScene(besideSources.rtc);
         if (interior.rtc) rtcReleaseScene(interior.rtc);
         if (all.rtc) rtcReleaseScene(all.rtc);
         if (device) rtcReleaseDevice(device);
@@ -471,6 +506,11 @@ void RayCore::Impl::Build(const Scene& s) {
     std::vector<bool> leftOut(s.surfaces.size(), false);
     for (int i : bounding.surfaces) leftOut[static_cast<size_t>(i)] = true;
     BuildLayer(interior, leftOut);
+
+    sourcePlane = FindSourcePlane(s, leftOut, std::max(extent, MaxAbs(centre) + extent));
+    if (!sourcePlane) return;
+    for (int i : sourcePlane->surfaces) leftOut[static_cast<size_t>(i)] = true;
+    BuildLayer(besideSources, leftOut);
 }
 
 void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
@@ -483,6 +523,15 @@ void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
     // spend more on the build for faster traversal.
     rtcSetSceneBuildQuality(layer.rtc, RTC_BUILD_QUALITY_HIGH);
 
+    // Embree's candidates lie within its float error of their surface, and
+    // the exact tests accept them there.
+    const double pad = 2 * kFloatSlack * std::max(extent, MaxAbs(centre) + extent) + tolerance;
+    for (size_t i = 0; i < scene->surfaces.size(); ++i) {
+        const Surface& surface = scene->surfaces[i];
+        if (leftOut[i] || surface.type == SurfaceType::Source) continue;
+        const Bounds3 b = ShapeBounds(surface);
+        layer.bounds.Extend(Bounds3{b.lo - Vec3{pad, pad, pad}, b.hi + Vec3{pad, pad, pad}});
+    }
     BuildPolygons(layer, leftOut);
     BuildUserKind(spheres, layer, &UserIntersect<Sphere, IntersectSphere>,
                   &UserOccluded<Sphere, IntersectSphere>);
@@ -696,10 +745,22 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const 
     RTCRay ray;
     Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
     // Between two points inside every bounding plane the bounding polygons
-    // cannot be in the way (raycore/hull.h).
-    const bool inside = impl_->interior.rtc && tmaxIn > 0 && impl_->bounding.Inside(orgIn) &&
-                        impl_->bounding.Inside(orgIn + dir * tmaxIn);
-    rtcOccluded1(inside ? impl_->interior.rtc : impl_->all.rtc, &q.rtc, &ray);
+    // cannot be in the way (raycore/hull.h), nor, if the points are on one
+    // side of it, the polygons in the light sources' plane
+    // (raycore/source_plane.h).
+    const Impl::Layer* layer = &impl_->all;
+    if (impl_->interior.rtc && tmaxIn > 0) {
+        const Vec3 end = orgIn + dir * tmaxIn;
+        if (impl_->bounding.Inside(orgIn) && impl_->bounding.Inside(end)) {
+            layer = impl_->besideSources.rtc && impl_->sourcePlane->Clears(orgIn, end)
+                        ? &impl_->besideSources
+                        : &impl_->interior;
+            // Most shadow rays in a room pass by its furniture: no need to
+            // ask Embree.
+            if (!SegmentMeetsBox(orgIn, end, dir, tmaxIn, layer->bounds)) return false;
+        }
+    }
+    rtcOccluded1(layer->rtc, &q.rtc, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
 
