@@ -517,7 +517,9 @@ void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
     layer.rtc = rtcNewScene(device);
     Check("rtcNewScene");
     // ROBUST: watertight triangle tests, so rays through shared edges and
-    // vertices never slip between triangles.
+    // vertices never slip between triangles. It costs ~9 % of a cornell
+    // -ab 2 run, but without it 3408 of 300 000 rays from inside a closed
+    // genbox room aimed at its edges and corners escaped (none with it).
     rtcSetSceneFlags(layer.rtc, RTC_SCENE_FLAG_ROBUST);
     // The scene never changes after loading and is traced millions of times:
     // spend more on the build for faster traversal.
@@ -740,10 +742,6 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const 
     const auto advance = impl_->DistanceToScene(orgIn, dir);
     if (!advance) return false;
     if (tmaxIn > 0 && tmaxIn <= *advance) return false;
-    const Vec3 org = orgIn + dir * *advance;
-    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
-    RTCRay ray;
-    Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
     // Between two points inside every bounding plane the bounding polygons
     // cannot be in the way (raycore/hull.h), nor, if the points are on one
     // side of it, the polygons in the light sources' plane
@@ -760,6 +758,10 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const 
             if (!SegmentMeetsBox(orgIn, end, dir, tmaxIn, layer->bounds)) return false;
         }
     }
+    const Vec3 org = orgIn + dir * *advance;
+    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
+    RTCRay ray;
+    Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
     rtcOccluded1(layer->rtc, &q.rtc, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
