@@ -13,11 +13,14 @@
 #include <vector>
 
 #include "raycore/raycore.h"
+#include "tests/raycore/brute_occlusion.h"
 #include "tests/raycore/test_scenes.h"
 
 namespace rt {
 namespace {
 
+using testing::RandomSurfacePoint;
+using testing::CheckShadowSegment;
 using testing::SceneBuilder;
 
 constexpr double kMargin = 1e-8;
@@ -100,36 +103,6 @@ TEST(BoundingPolygons, PlanesAreCapped) {
     EXPECT_EQ(bounds.surfaces.size(), 8u);
 }
 
-/// Brute-force occlusion: any surface hit in (tol, tmax).
-bool BruteOccluded(const RayCore& core, const Scene& scene, const Vec3& org, const Vec3& dir,
-                   double tmax) {
-    for (int s = 0; s < static_cast<int>(scene.surfaces.size()); ++s) {
-        const auto h = core.IntersectSurface(s, org, dir);
-        if (h && h->t < tmax) return true;
-    }
-    return false;
-}
-
-/// Brute force, unless moving the segment sideways by 1e-5 changes the
-/// answer: a segment that grazes an edge (the double test counts points within
-/// 1e-6 of an edge as inside) or runs along a face has no robust answer, and
-/// Embree's float test, whose outcome there also depends on the hierarchy's
-/// boxes, may then differ either way. The moved segments are 1e-4 shorter at
-/// each end, so that moving does not push their ends into the surfaces they
-/// start and end on.
-std::optional<bool> RobustBruteOccluded(const RayCore& core, const Scene& scene, const Vec3& org,
-                                        const Vec3& dir, double tmax) {
-    const bool answer = BruteOccluded(core, scene, org, dir, tmax);
-    const Frame frame = Frame::Around(dir);
-    for (const Vec3& side : {frame.u, -frame.u, frame.v, -frame.v}) {
-        if (BruteOccluded(core, scene, org + side * 1e-5 + dir * 1e-4, dir, tmax - 2e-4) !=
-            answer) {
-            return std::nullopt;
-        }
-    }
-    return answer;
-}
-
 /// Shadow-ray-like segments between points on the room's surfaces, including
 /// the walls the interior layer leaves out, points on edges and in corners,
 /// and from points outside the room (which must still see the walls).
@@ -139,13 +112,7 @@ TEST(BoundingPolygons, OcclusionAgreesWithBruteForce) {
     std::mt19937 rng(31);
     std::uniform_real_distribution<double> u(0, 1);
     const auto onSurface = [&]() {
-        // A closest hit of a random ray from inside the room.
-        for (;;) {
-            const Vec3 org{0.1 + 3.8 * u(rng), 0.1 + 4.8 * u(rng), 0.1 + 2.8 * u(rng)};
-            std::normal_distribution<double> g;
-            const Vec3 dir = Normalize(Vec3{g(rng), g(rng), g(rng)});
-            if (auto h = core.Intersect(org, dir, 0)) return h->point;
-        }
+        return RandomSurfacePoint(core, {0.1, 0.1, 0.1}, {3.9, 4.9, 2.9}, rng);
     };
     const std::vector<Vec3> special = {{0, 0, 0},   {4, 5, 3},   {2, 0, 1.5}, {0, 2.5, 0},
                                        {1, 1, 0},   {2, 2.5, 0}, {2, 2.5, -1}, {5, 2, 1},
@@ -154,16 +121,11 @@ TEST(BoundingPolygons, OcclusionAgreesWithBruteForce) {
     for (int i = 0; i < 20000; ++i) {
         const Vec3 a = i < 2000 ? special[static_cast<size_t>(i) % special.size()] : onSurface();
         const Vec3 b = i % 3 == 0 ? Vec3{1.5 + u(rng), 2 + u(rng), 2.99} : onSurface();
-        const Vec3 d = b - a;
-        const double length = Length(d);
-        if (length < 1e-3) continue;
-        const Vec3 dir = d / length;
-        const double tmax = length * (1 - 1e-7);
-        const auto expected = RobustBruteOccluded(core, scene, a, dir, tmax);
-        if (!expected) continue;
-        EXPECT_EQ(core.Occluded(a, dir, tmax), *expected) << a << " -> " << b;
+        const auto segment = CheckShadowSegment(core, scene, a, b);
+        if (!segment) continue;
+        EXPECT_EQ(segment->occluded, segment->expected) << a << " -> " << b;
         ++checked;
-        blocked += *expected;
+        blocked += segment->expected;
     }
     EXPECT_GT(checked, 15000);
     EXPECT_GT(blocked, 1000);  // the block, the sphere and the walls from outside do block

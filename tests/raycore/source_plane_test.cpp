@@ -13,11 +13,14 @@
 #include <vector>
 
 #include "raycore/raycore.h"
+#include "tests/raycore/brute_occlusion.h"
 #include "tests/raycore/test_scenes.h"
 
 namespace rt {
 namespace {
 
+using testing::RandomSurfacePoint;
+using testing::CheckShadowSegment;
 using testing::SceneBuilder;
 
 /// A 4 x 5 x 3 room (walls 0-5) with a block on the floor (6-11); just below
@@ -80,35 +83,19 @@ TEST(SourcePlane, ClearsOnlySegmentsWhollyOnOneSide) {
     EXPECT_FALSE(plane.Clears({1, 1, 0}, {2, 2, 2.9 - 1e-9}));  // within the clearance
 }
 
-/// Brute-force occlusion: any surface hit in (tol, tmax).
-bool BruteOccluded(const RayCore& core, const Scene& scene, const Vec3& org, const Vec3& dir,
-                   double tmax) {
-    for (int s = 0; s < static_cast<int>(scene.surfaces.size()); ++s) {
-        const auto h = core.IntersectSurface(s, org, dir);
-        if (h && h->t < tmax) return true;
-    }
-    return false;
-}
-
 /// Segments like shadow rays toward points of the lamp plane's polygons (which
 /// the layer without them must answer), and segments that cross or touch the
 /// plane or run above it, where those polygons must block. Each end is a
 /// point on a surface (the closest hit of a random ray), on one of the plane's
-/// polygons, or in the gap between the plane and the ceiling. Segments whose
-/// answer changes when moved by 1e-5 (grazing an edge) are skipped, as in
-/// hull_test.cpp.
+/// polygons, or in the gap between the plane and the ceiling. Segments that
+/// graze an edge are skipped (RobustBruteOccluded).
 TEST(SourcePlane, OcclusionAgreesWithBruteForce) {
     const Scene scene = LitRoom();
     const RayCore core(scene);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0, 1);
     const auto onSurface = [&]() {
-        for (;;) {
-            const Vec3 org{0.1 + 3.8 * u(rng), 0.1 + 4.8 * u(rng), 0.1 + 2.7 * u(rng)};
-            std::normal_distribution<double> g;
-            const Vec3 dir = Normalize(Vec3{g(rng), g(rng), g(rng)});
-            if (auto h = core.Intersect(org, dir, 0)) return h->point;
-        }
+        return RandomSurfacePoint(core, {0.1, 0.1, 0.1}, {3.9, 4.9, 2.8}, rng);
     };
     const auto inPlane = [&]() -> Vec3 {
         switch (rng() % 3) {
@@ -118,33 +105,18 @@ TEST(SourcePlane, OcclusionAgreesWithBruteForce) {
         }
     };
     const auto aboveIt = [&]() -> Vec3 { return {1.4 + 2.2 * u(rng), 1.9 + 1.2 * u(rng), 2.95}; };
-    const auto robust = [&](const Vec3& a, const Vec3& dir, double tmax) -> std::optional<bool> {
-        const bool answer = BruteOccluded(core, scene, a, dir, tmax);
-        const Frame frame = Frame::Around(dir);
-        for (const Vec3& side : {frame.u, -frame.u, frame.v, -frame.v}) {
-            if (BruteOccluded(core, scene, a + side * 1e-5 + dir * 1e-4, dir, tmax - 2e-4) !=
-                answer) {
-                return std::nullopt;
-            }
-        }
-        return answer;
-    };
     int checked = 0, blocked = 0, blockedAcross = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3 a = i % 5 == 4 ? aboveIt() : onSurface();
         const Vec3 b = i % 2 == 0 ? inPlane() : (i % 4 == 1 ? aboveIt() : onSurface());
-        const Vec3 d = b - a;
-        const double length = Length(d);
-        if (length < 1e-3) continue;
-        const Vec3 dir = d / length;
-        // As a shadow ray: stop 1e-7 of the length short of the end.
-        const double tmax = length * (1 - 1e-7);
-        const auto expected = robust(a, dir, tmax);
-        if (!expected) continue;
-        EXPECT_EQ(core.Occluded(a, dir, tmax), *expected) << a << " -> " << b;
+        const auto segment = CheckShadowSegment(core, scene, a, b);
+        if (!segment) continue;
+        EXPECT_EQ(segment->occluded, segment->expected) << a << " -> " << b;
         ++checked;
-        blocked += *expected;
-        if (*expected && (a.z > 2.9) != (b.z > 2.9) && std::min(a.z, b.z) < 2.9) ++blockedAcross;
+        blocked += segment->expected;
+        if (segment->expected && (a.z > 2.9) != (b.z > 2.9) && std::min(a.z, b.z) < 2.9) {
+            ++blockedAcross;
+        }
     }
     EXPECT_GT(checked, 15000);
     EXPECT_GT(blocked, 2000);
