@@ -20,11 +20,12 @@ struct RenderStats {
     std::uint64_t recordsLoaded = 0;     // records added from outside (ambient files)
 
     // Only measured when timing is on (Renderer::EnableTiming; rtrace -t),
-    // because reading the clock around every shading point costs ~5 %.
+    // because reading the clock costs time of its own.
     double secondsSampling = 0;  // hemisphere sampling, less the direct lighting and
                                  // lookups done at its samples' hits
     double secondsLookup = 0;    // cache lookups (interpolation)
-    double secondsDirect = 0;    // direct lighting, shadow rays included
+    double secondsDirect = 0;    // direct lighting, shadow rays included; an estimate
+                                 // from every 16th call (Integrator::Direct)
 };
 
 }  // namespace rt
