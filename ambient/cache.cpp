@@ -59,7 +59,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     const double a = accuracy_;
     // A record whose plane lies in front of the query point by more than this
     // is on another surface (Radiance's "behind" tolerance).
-    const double behindTolerance = limits_.minRadius * a + limits_.behindMargin;
+    const double behindTolerance = limits_.BehindTolerance(a);
     *recordsUsed = 0;
     Rgb sum;
     double weightSum = 0;

@@ -12,6 +12,11 @@ struct AmbientLimits {
     /// Added to minRadius·a in the "behind" test (Radiance's 0.001 scene units).
     double behindMargin = 0.001;
 
+    /// minRadius·a + behindMargin for -aa a: how far a record's plane may lie
+    /// in front of a query (the "behind" test), and the distance within which
+    /// the leak test's corral ignores occluders (Radiance's minarad·a + 0.001).
+    double BehindTolerance(double accuracy) const { return minRadius * accuracy + behindMargin; }
+
     /// `resolution` is -ar, `cubeSize` oconv's cube size (Scene::cubeSize).
     /// `toleranceScale` (Scene::ToleranceScale(), 1 for scenes of unit size
     /// and up) shrinks Radiance's absolute lengths with smaller scenes.

@@ -171,10 +171,9 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     // makeambient() failure, answered with the ambient value.
     if (!h.anySample) return AmbientFallback(coefficient);
     if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
-        const AmbientLimits& limits = cache_->limits();
         const double a = ambient_.accuracy;
-        const double nearest = limits.minRadius * a + limits.behindMargin;
-        record->corral = CorralBits(h, record->radius[0] * a, 1.0 / nearest);
+        record->corral =
+            CorralBits(h, record->radius[0] * a, 1.0 / cache_->limits().BehindTolerance(a));
         if (cache_->Add(*record)) {
             newRecords_.push_back(*record);
             if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {
