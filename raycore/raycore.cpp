@@ -269,6 +269,9 @@ struct RayCore::Impl {
     const Scene* scene = nullptr;
     Vec3 centre;                           // Embree coordinates are relative to this point
     double extent = 1;                     // size of the geometry around the centre (scene units)
+    /// Size of the scene's coordinates: the extent, or the largest coordinate
+    /// of the geometry if larger (far from the origin). Sets rounding allowances.
+    double coordinateScale = 1;
     double tolerance = kFtiny;             // Scene::distanceTolerance
     std::vector<Priority> priority;        // per surface
     UserKind spheres, cones, rings;
@@ -445,6 +448,7 @@ void RayCore::Impl::Build(const Scene& s) {
         extent = MaxAbs(bounds.hi - bounds.lo);
     }
     if (!(extent > 0)) extent = 1;
+    coordinateScale = std::max(extent, MaxAbs(centre) + extent);
 
     priority.resize(s.surfaces.size());
     for (size_t i = 0; i < s.surfaces.size(); ++i) {
@@ -507,7 +511,7 @@ void RayCore::Impl::Build(const Scene& s) {
     for (int i : bounding.surfaces) leftOut[static_cast<size_t>(i)] = true;
     BuildLayer(interior, leftOut);
 
-    sourcePlane = FindSourcePlane(s, leftOut, std::max(extent, MaxAbs(centre) + extent));
+    sourcePlane = FindSourcePlane(s, leftOut, coordinateScale);
     if (!sourcePlane) return;
     for (int i : sourcePlane->surfaces) leftOut[static_cast<size_t>(i)] = true;
     BuildLayer(besideSources, leftOut);
@@ -527,7 +531,7 @@ void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
 
     // Embree's candidates lie within its float error of their surface, and
     // the exact tests accept them there.
-    const double pad = 2 * kFloatSlack * std::max(extent, MaxAbs(centre) + extent) + tolerance;
+    const double pad = 2 * kFloatSlack * coordinateScale + tolerance;
     for (size_t i = 0; i < scene->surfaces.size(); ++i) {
         const Surface& surface = scene->surfaces[i];
         if (leftOut[i] || surface.type == SurfaceType::Source) continue;
