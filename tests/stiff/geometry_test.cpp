@@ -173,7 +173,9 @@ TEST(SensorsOnSurfaces, OnEdgesAndInCornersAreFiniteAndNonNegative) {
 /// A corner sensor against one 1e-5 inside the room from both walls. Bound:
 /// the two diagonal sensors, which the -I offset moves off the walls,
 /// differed by 0.1-0.4 % (seeds 1-2), the dark corner behind the tall block
-/// by 0.4-3.9 %; bound 6 %. Floor and ceiling corners now come out 2-18 % low.
+/// by 0.4-3.9 %; bound 6 %. Before -I sensors were moved off the walls through
+/// them (Integrator::OffWallsThroughSensor), floor and ceiling corners came
+/// out 2-18 % low.
 TEST(SensorsOnSurfaces, InCornersMatchPointsBesideThem) {
     const Rows corner = rt::testing::RunRows(kCornellOptions + kCornell,
                                              WriteTempFile("corners.pts", CornerPoints(0)));
