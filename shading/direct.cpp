@@ -57,7 +57,23 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
         sray.rod = -Dot(sray.dir, src.normal);
     } else {
         auto hit = core_.IntersectSurface(src.surface, sray.org, sray.dir);
-        if (!hit) return Rgb();  // aiming failure: the sample missed the source
+        LightSource& aimed = sources_[source];
+        if (!hit) {
+            // The sample missed the source (a partition of a non-parallelogram
+            // polygon reaching past its edge, or rounding at grazing angles).
+            if (aimed.aimSuccess >= 0) {
+                aimed.aimSuccess -= LightSource::kAimRequired;
+                if (aimed.aimSuccess < 0 && warn_) {
+                    warn_("aiming failure for light source \"" + surface.name + "\"");
+                }
+            }
+            return Rgb();
+        }
+        if (aimed.aimSuccess < 0) {
+            aimed.aimSuccess = 1;  // warn again at the next failure
+        } else if (aimed.aimSuccess < LightSource::kAimCredit) {
+            ++aimed.aimSuccess;
+        }
         sray.SetHit(*hit);
     }
     sray.rcol = Rgb();
@@ -153,6 +169,11 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
             sray.dir = s.dir;
             sray.rsrc = s.source;
             c.value = SourceValue(sray, s.source, s.distance) * c.coef;
+            // The shadow ray must stop where it enters the source's surface,
+            // not at the sample point: a sphere's or cylinder's sample points
+            // lie inside it, behind its own surface, which an any-hit query
+            // would count as the source blocking itself.
+            c.distance = sray.rot;
         }
         c.bright = Bright(c.value);
         if (c.bright > 0.0) contribs.push_back(c);

@@ -152,10 +152,16 @@ void Integrator::Shade(TracedRay& ray) {
     if (surface.material < 0) return;  // void: nothing to shade, black
     const Material& m = scene_.materials[surface.material];
     // -i: the first opaque, non-emitting surface reached along primary and
-    // transmitted rays is measured as a Lambertian irradiance meter.
+    // transmitted rays is measured as a Lambertian irradiance meter. The
+    // transparent surfaces before it are passed straight through, unattenuated
+    // (Radiance's irr_ignore and raytrans): the meter reads what arrives at the
+    // surface behind the glass, not through it a second time.
     if (shading_.irradiance == IrradianceMode::AtHit &&
-        (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsTransparentType(m.type) &&
-        !IsLightType(m.type)) {
+        (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsLightType(m.type)) {
+        if (IsTransparentType(m.type)) {
+            PassThrough(ray);
+            return;
+        }
         ray.lambertian = true;
         ShadeNormal(ray, lambertian_);
         return;

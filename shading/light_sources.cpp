@@ -230,15 +230,9 @@ void PartitionSource(const LightSource& src, const Vec3& point, double rayWeight
     }
 }
 
-/// Radiance's spotout(): true if the sample direction lies outside the spot.
-bool OutsideSpot(const LightSource& src, const Vec3& org, const Vec3& dir) {
-    if (src.shape == LightSource::Shape::Distant) {
-        // A distant spotlight is a beam: check the ray origin's distance from its axis.
-        Vec3 vd = src.spotAim - org;
-        double d = Dot(dir, vd);
-        d = LengthSquared(vd) - d * d;
-        return kPi * d > src.spotSolidAngle;
-    }
+/// Radiance's spotout() for a local spotlight: true if the sample direction
+/// lies outside the spot. (Distant sources never carry a spot.)
+bool OutsideSpot(const LightSource& src, const Vec3& dir) {
     return src.spotSolidAngle < 2.0 * kPi * (1.0 + Dot(src.spotAim, dir));
 }
 
@@ -276,6 +270,13 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
             src.proximity = true;
             src.proximityRadius = m.args[3];
             if (src.shape == LightSource::Shape::Distant) src.skip = true;
+        } else if (m.type == MaterialType::Spotlight &&
+                   src.shape == LightSource::Shape::Distant) {
+            // Radiance makes no spot of a distant source: it lights as a
+            // plain distant light, after this warning.
+            if (warn) {
+                warn(s.loc.ToString() + ": distant source is a spotlight for \"" + s.name + "\"");
+            }
         } else if (m.type == MaterialType::Spotlight) {
             double angle = m.args[3];
             if (angle <= kFtiny) ThrowUserError(m.loc, "zero angle for spotlight \"" + m.name + "\"");
@@ -373,14 +374,13 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
             if (distant) {
                 sample.omega = omega * src.area;
                 sample.distance = kFhuge;
-                if (src.spot && OutsideSpot(src, point, dir)) continue;
             } else {
                 if (omega <= 1e-4) continue;  // behind the source or grazing
                 sample.omega = omega * src.area / (d * d);
                 sample.distance = d;
                 if (src.proximity && d > src.proximityRadius) continue;
                 if (src.spot) {
-                    if (OutsideSpot(src, point, dir)) continue;
+                    if (OutsideSpot(src, dir)) continue;
                     double df = d + src.spotFocal;
                     sample.omega *= d * d / (df * df);
                 }
