@@ -1,8 +1,9 @@
 // End-to-end: build/bin/rtrace against outputs of real Radiance 5.4a on the
-// shared scenes (scenes/*/ref/), with the tolerances of the foundation issue:
-// modifiers identical, lengths/points/normals within 1e-4 relative, values
-// within 0.5 % RMS relative over rays brighter than 1e-3 and 98 % of rays
-// within 2 %.
+// shared scenes (scenes/*/ref/). At -ab 0 lazyrad claims to print what Radiance
+// prints, so every number on every line (value, length, point, normal,
+// unperturbed normal) must agree to within kMaxLastDigits units of the 7th
+// significant digit, the last one rtrace's %e prints, and the modifier names
+// must be identical.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -54,8 +55,25 @@ std::string RunCommand(const std::string& command) {
     return r.out;
 }
 
-bool RelClose(double a, double b, double tol) {
-    return std::fabs(a - b) <= tol * std::max({std::fabs(a), std::fabs(b), 1.0});
+// Both programs round to 7 significant digits, so numbers that differ by less
+// than one unit of the last digit can print one unit apart. Two units leave
+// room for that and for a true difference of about one unit (evaluation order,
+// libm); a wrong formula, constant or hit point shows as many more.
+constexpr double kMaxLastDigits = 2.0;
+
+// Below these magnitudes a number counts as zero: Radiance prints some
+// coordinates that are 0 in exact arithmetic as rounding residue of order 1e-16
+// (scene units), and lit values in the shared scenes are many orders of
+// magnitude above 1e-9 W·sr⁻¹·m⁻².
+constexpr double kValueFloor = 1e-9;     // W·sr⁻¹·m⁻²
+constexpr double kGeometryFloor = 1e-9;  // scene units, and for the unit normals
+
+/// |a − b| in units of the 7th significant digit of the larger magnitude (at
+/// least `floor`): 1 means the two differ by one in the last digit printed by %e.
+double LastDigitsApart(double a, double b, double floor) {
+    const double larger = std::max({std::fabs(a), std::fabs(b), floor});
+    const double lastDigit = std::pow(10.0, std::floor(std::log10(larger)) - 6);
+    return std::fabs(a - b) / lastDigit;
 }
 
 void CompareAb0(const std::string& scene, const std::string& rays, const std::string& ref) {
@@ -67,42 +85,38 @@ void CompareAb0(const std::string& scene, const std::string& rays, const std::st
     auto got = ParseRows(out);
     auto want = ParseRows(refFile);
     ASSERT_EQ(got.size(), want.size());
-    double sumSq = 0;
-    int bright = 0, within2 = 0;
+    static const char* const kFields[13] = {"red",      "green",    "blue",     "length", "point x",
+                                            "point y",  "point z",  "normal x", "normal y",
+                                            "normal z", "normal x (unperturbed)",
+                                            "normal y (unperturbed)", "normal z (unperturbed)"};
+    double largest = 0;
+    std::size_t largestLine = 0;
+    int largestField = 0, numbers = 0, differing = 0;
     for (size_t i = 0; i < want.size(); ++i) {
         const Row& g = got[i];
         const Row& w = want[i];
         ASSERT_EQ(g.numbers.size(), 13u) << "line " << i + 1;
         ASSERT_EQ(w.numbers.size(), 13u);
         EXPECT_EQ(g.modifier, w.modifier) << "line " << i + 1;
-        for (int k = 3; k < 13; ++k) {
-            EXPECT_TRUE(RelClose(g.numbers[k], w.numbers[k], 1e-4))
-                << "line " << i + 1 << " field " << k << ": " << g.numbers[k] << " vs "
+        for (int k = 0; k < 13; ++k) {
+            const double floor = k < 3 ? kValueFloor : kGeometryFloor;
+            const double apart = LastDigitsApart(g.numbers[k], w.numbers[k], floor);
+            EXPECT_LE(apart, kMaxLastDigits)
+                << "line " << i + 1 << " " << kFields[k] << ": " << g.numbers[k] << " vs Radiance "
                 << w.numbers[k];
-        }
-        for (int c = 0; c < 3; ++c) {
-            EXPECT_GE(g.numbers[c], 0.0);
-            EXPECT_TRUE(std::isfinite(g.numbers[c]));
-        }
-        double gv = 0.265074126 * g.numbers[0] + 0.670114631 * g.numbers[1] + 0.064811243 * g.numbers[2];
-        double wv = 0.265074126 * w.numbers[0] + 0.670114631 * w.numbers[1] + 0.064811243 * w.numbers[2];
-        if (wv > 1e-3) {
-            double rel = (gv - wv) / wv;
-            sumSq += rel * rel;
-            ++bright;
-            if (std::fabs(rel) <= 0.02) ++within2;
-        } else {
-            EXPECT_LE(gv, 2e-3) << "line " << i + 1;
+            ++numbers;
+            if (g.numbers[k] != w.numbers[k]) ++differing;
+            if (apart > largest) {
+                largest = apart;
+                largestLine = i + 1;
+                largestField = k;
+            }
         }
     }
-    ASSERT_GT(bright, 0);
-    double rms = std::sqrt(sumSq / bright);
-    double frac = double(within2) / bright;
-    ::testing::Test::RecordProperty("rms_percent", std::to_string(100 * rms));
-    std::printf("%s: %d bright rays, RMS %.2e %%, %.1f %% within 2 %%\n", scene.c_str(), bright,
-                100 * rms, 100 * frac);
-    EXPECT_LE(rms, 0.005);
-    EXPECT_GE(frac, 0.98);
+    std::printf("%s: %d numbers on %zu lines, %d not identical, largest difference %.3g units of "
+                "the 7th digit (line %zu, %s; limit %g)\n",
+                scene.c_str(), numbers, want.size(), differing, largest, largestLine,
+                kFields[largestField], kMaxLastDigits);
 }
 
 TEST(Golden, CornellDirectMatchesRadiance) {
