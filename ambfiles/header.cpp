@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string_view>
 
-#include "ambfiles/portable.h"
+#include "core/portable.h"
 #include "ambfiles/record_codec.h"
 
 namespace rt {

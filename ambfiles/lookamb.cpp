@@ -19,7 +19,7 @@
 
 #include "ambfiles/ascii.h"
 #include "ambfiles/header.h"
-#include "ambfiles/portable.h"
+#include "core/portable.h"
 #include "ambfiles/record_codec.h"
 
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "ambfiles/dircode.h"
-#include "ambfiles/portable.h"
+#include "core/portable.h"
 
 namespace rt {
 namespace {

@@ -473,10 +473,6 @@ const char* OutputLetterName(char c) {
     return "";
 }
 
-bool IsOctreeArgument(const std::string& arg) {
-    return arg.starts_with("!") || (arg.size() >= 4 && arg.ends_with(".oct"));
-}
-
 }  // namespace
 
 std::span<const OptionInfo> OptionTable() { return kOptionInfos; }
@@ -526,7 +522,7 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
     std::size_t i = 1;
     for (; i < args.size(); ++i) {
         ExpandInPlace(args, i);
-        if (i >= args.size() || args[i].empty() || args[i][0] != '-') break;
+        if (i >= args.size() || args[i].empty() || args[i][0] != '-' || args[i] == "-") break;
         const std::string& arg = args[i];
         if (arg == "-version") {
             cl.action = CommandLine::Action::PrintVersion;
@@ -557,10 +553,9 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
     for (std::size_t k = i; k < args.size(); ++k) {
         ExpandInPlace(args, k);
         if (k >= args.size()) break;
-        if (IsOctreeArgument(args[k]))
-            ThrowUserError("octree input not supported yet, give the .rad files ('" + args[k] +
-                           "')");
-        if (args[k].empty() || args[k][0] == '-') CommandLineError(args[k]);
+        // "-" is a scene on standard input; a "!command" argument is one whose
+        // output is an octree.
+        if (args[k].empty() || (args[k][0] == '-' && args[k] != "-")) CommandLineError(args[k]);
         cl.sceneFiles.push_back(args[k]);
     }
     if (cl.sceneFiles.empty()) ThrowUserError("missing octree argument");

@@ -242,8 +242,13 @@ std::string FormatArgs(std::span<const std::string> words) {
 }
 
 std::string FormatHeader(std::span<const std::string> commandLine, const OutputSpec& spec,
-                         char outputFormat, std::time_t now) {
+                         char outputFormat, std::time_t now,
+                         std::span<const std::string> sceneHeader) {
     std::string h = "#?RADIANCE\n";
+    for (const std::string& line : sceneHeader) {
+        h += line;
+        h += '\n';
+    }
     h += FormatArgs(commandLine);
     h += "SOFTWARE= ";
     h += kVersionString;

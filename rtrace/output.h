@@ -84,11 +84,13 @@ std::string QuoteWord(std::string_view word);
 std::string FormatArgs(std::span<const std::string> words);
 
 /// The information header rtrace writes with -h+ (§1.8): "#?RADIANCE",
-/// `commandLine` (argv[0] and the options, not the scene files), SOFTWARE=,
-/// CAPDATE= (local time) and GMT= of `now`, NCOMP=, BigEndian= (f/d only),
-/// FORMAT=, and the empty line that ends it.
+/// the octree's own header lines (`sceneHeader`, copied as Radiance copies
+/// them), `commandLine` (argv[0] and the options, not the scene files),
+/// SOFTWARE=, CAPDATE= (local time) and GMT= of `now`, NCOMP=, BigEndian=
+/// (f/d only), FORMAT=, and the empty line that ends it.
 std::string FormatHeader(std::span<const std::string> commandLine, const OutputSpec& spec,
-                         char outputFormat, std::time_t now);
+                         char outputFormat, std::time_t now,
+                         std::span<const std::string> sceneHeader = {});
 
 /// The picture resolution line "-Y <y> +X <x>\n".
 std::string FormatResolution(int x, int y);

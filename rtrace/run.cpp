@@ -135,7 +135,8 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
 
         if (opt.header) {
             std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);
-            writer.WriteText(FormatHeader(commandLine, spec, opt.outputFormat, now));
+            writer.WriteText(FormatHeader(commandLine, spec, opt.outputFormat, now,
+                                          evaluator->SceneHeaderLines()));
         }
         if (spec.trace) {
             evaluator->SetTraceCallback(

@@ -63,6 +63,9 @@ public:
     /// One line on what the renderer did (records per level, lookups, hit
     /// rate, rays traced), for -t and -e; empty if there is nothing to say.
     virtual std::string Summary() const { return {}; }
+    /// Header lines of the octree the scene came from, which rtrace copies
+    /// into its own header; empty for .rad input.
+    virtual std::vector<std::string> SceneHeaderLines() const { return {}; }
     /// A copy of every ambient cache record (to draw where the cache put
     /// them); empty without a cache or for evaluators that have none.
     virtual std::vector<AmbientRecord> CacheRecords() const { return {}; }

@@ -102,6 +102,8 @@ public:
 
     void Finish() override { Sync(); }
 
+    std::vector<std::string> SceneHeaderLines() const override { return scene_.headerLines; }
+
     std::vector<AmbientRecord> CacheRecords() const override {
         return renderers_[0]->CacheRecords();
     }

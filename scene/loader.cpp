@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
+#include "scene/octree.h"
 #include "scene/reader.h"
 
 namespace rt {
@@ -83,8 +85,93 @@ std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& n
     return objects;
 }
 
+namespace {
+
+/// The whole output of an octree `!command` (rtrace's "!oconv ..." argument).
+std::string CommandOutput(const std::string& command, const SceneLoadOptions& options) {
+    std::string shown = "!";
+    shown.append(PrintableWord(command));  // not "!" + ...: GCC 12 warns falsely (bug 105329)
+    if (!options.runCommands) ThrowUserError("commands disabled: " + shown);
+    CommandPipe pipe(command, options.toolDirectory, InheritedCommandDepth() + 1);
+    if (pipe.source() == nullptr) ThrowSystemError("cannot execute " + shown);
+    std::string out;
+    for (int c = pipe.source()->Get(); c != std::char_traits<char>::eof(); c = pipe.source()->Get()) {
+        out.push_back(static_cast<char>(c));
+    }
+    const std::string failure = pipe.Finish();
+    if (!failure.empty()) ThrowUserError("command failed (" + failure + "): " + shown);
+    return out;
+}
+
+/// Builds the scene an octree describes: its own objects if frozen, else its
+/// scene files re-read (with their `!commands`) and checked against it.
+Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptions& options,
+                 const WarningSink& warn, bool firstLineRead = false) {
+    const OctreeFile octree = ReadOctree(in, name, firstLineRead);
+    std::vector<SceneObject> objects;
+    if (octree.frozen()) {
+        objects = octree.objects;
+    } else {
+        for (const std::string& file : octree.sceneFiles) {
+            std::ifstream f(file, std::ios::binary);
+            if (!f) ThrowSystemError(name + ": cannot open its scene file \"" + file + "\"");
+            auto more = ReadSceneObjects(f, file, options, warn);
+            objects.insert(objects.end(), std::make_move_iterator(more.begin()),
+                           std::make_move_iterator(more.end()));
+        }
+    }
+    CheckOctreeObjects(octree, objects, name);
+    Scene scene = BuildScene(objects, warn);
+    // The octree's cube is the scene's: -ar means what it means to Radiance
+    // on the same file.
+    scene.cubeOrigin = octree.cubeOrigin;
+    scene.cubeSize = octree.cubeSize;
+    scene.headerLines = octree.headerLines;
+    return scene;
+}
+
+}  // namespace
+
 Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& options,
                 const WarningSink& warn) {
+    // An octree (a file, or the output of a `!command`) is the whole scene,
+    // as it is for Radiance's rtrace.
+    if (files.size() == 1 && files[0] == "-" && std::cin.peek() == '#') {
+        // Standard input cannot be rewound: read its first line, and if it
+        // opens an octree, read the rest of it, leaving the rays that follow.
+        // Otherwise the scene text goes on after that comment line.
+        std::string first;
+        std::getline(std::cin, first);
+        if (first == "#?RADIANCE") return LoadOctree(std::cin, "<stdin>", options, warn, true);
+        std::vector<SceneObject> objects = ReadSceneObjects(std::cin, "<stdin>", options, warn);
+        return BuildScene(objects, warn);
+    }
+    for (const std::string& file : files) {
+        const bool command = file.starts_with("!");
+        if (!command && file == "-") continue;
+        std::ifstream f;
+        std::istringstream commandOut;
+        std::istream* in = nullptr;
+        if (command) {
+            commandOut.str(CommandOutput(file.substr(1), options));
+            in = &commandOut;
+        } else {
+            f.open(file, std::ios::binary);
+            if (!f) continue;  // reported below, with the other open errors
+            in = &f;
+        }
+        if (!LooksLikeOctree(*in)) {
+            if (command) {
+                ThrowUserError("the output of \"" + PrintableWord(file) + "\" is not an octree");
+            }
+            continue;
+        }
+        if (files.size() != 1) {
+            ThrowUserError("an octree (\"" + PrintableWord(file) +
+                           "\") must be the only scene argument");
+        }
+        return LoadOctree(*in, file, options, warn);
+    }
     std::vector<SceneObject> objects;
     for (const std::string& file : files) {
         std::vector<SceneObject> more;

@@ -105,6 +105,9 @@ struct Scene {
     /// 1e-5 each side; `cubeSize` is its largest extent. Drives -ar and miss distances.
     Vec3 cubeOrigin;
     double cubeSize = 0;
+    /// Header lines of the octree the scene came from (between "#?RADIANCE"
+    /// and FORMAT): rtrace copies them into its output header. Empty for .rad input.
+    std::vector<std::string> headerLines;
     /// Radiance's FTINY used as a length: hits nearer than this are the surface
     /// the ray starts on, and hits this close together coincide. Radiance's
     /// absolute 1e-6 assumes scenes of about unit size; BuildScene scales it

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "ambfiles/dircode.h"
-#include "ambfiles/portable.h"
+#include "core/portable.h"
 #include "tests/ambfiles/test_util.h"
 
 namespace rt {

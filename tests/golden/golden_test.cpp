@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -76,12 +77,12 @@ double LastDigitsApart(double a, double b, double floor) {
     return std::fabs(a - b) / lastDigit;
 }
 
-void CompareAb0(const std::string& scene, const std::string& rays, const std::string& ref) {
-    std::string cmd = kRtrace + " -h -ab 0 -ovlpnNm " + kSource + "/scenes/" + scene + " < " +
-                      kSource + "/scenes/" + rays;
+/// Runs `cmd` (an rtrace -h -ab 0 -ovlpnNm command) and compares its output
+/// with Radiance's in the file `refPath`; `scene` names the case in the report.
+void CompareOutput(const std::string& scene, const std::string& cmd, const std::string& refPath) {
     std::istringstream out(RunCommand(cmd));
-    std::ifstream refFile(kSource + "/scenes/" + ref);
-    ASSERT_TRUE(refFile) << ref;
+    std::ifstream refFile(refPath);
+    ASSERT_TRUE(refFile) << refPath;
     auto got = ParseRows(out);
     auto want = ParseRows(refFile);
     ASSERT_EQ(got.size(), want.size());
@@ -119,6 +120,13 @@ void CompareAb0(const std::string& scene, const std::string& rays, const std::st
                 kFields[largestField], kMaxLastDigits);
 }
 
+void CompareAb0(const std::string& scene, const std::string& rays, const std::string& ref) {
+    CompareOutput(scene,
+                  kRtrace + " -h -ab 0 -ovlpnNm " + kSource + "/scenes/" + scene + " < " + kSource +
+                      "/scenes/" + rays,
+                  kSource + "/scenes/" + ref);
+}
+
 TEST(Golden, CornellDirectMatchesRadiance) {
     CompareAb0("cornell/cornell.rad", "cornell/cam32.rays", "cornell/ref/cam32_ab0_ovlpnNm.txt");
 }
@@ -136,6 +144,97 @@ TEST(Golden, DaylitRoomDirectMatchesRadiance) {
 TEST(Golden, DaylitRoomFromGeneratorLinesMatchesRadiance) {
     CompareAb0("daylit_room/daylit_room_src.rad", "daylit_room/cam32x24.rays",
                "daylit_room/ref/cam32x24_ab0_ovlpnNm.txt");
+}
+
+// Octrees made by real Radiance's oconv (tests/data/octree/make_octrees.sh).
+// Octrees that name their scene files store relative names, so rtrace runs
+// from that folder, as Radiance's would.
+const std::string kOctrees = kSource + "/tests/data/octree";
+
+std::string InOctreeFolder(const std::string& rtraceArgs) {
+    return "(cd " + kOctrees + " && " + kRtrace + " " + rtraceArgs + ")";
+}
+
+/// An octree naming its .rad files gives exactly the output of those files:
+/// the same objects and the same cube, so also the same records at -ab 1.
+TEST(GoldenOctree, NamedSceneGivesTheRadOutputByteForByte) {
+    for (const auto& [octree, rad, rays] :
+         {std::tuple{"cornell.oct", "cornell/cornell.rad", "cornell/cam32.rays"},
+          std::tuple{"daylit_room.oct", "daylit_room/daylit_room.rad", "daylit_room/cam32x24.rays"}}) {
+        for (const std::string options : {"-ab 0 -ovlpnNm", "-ab 1 -ad 64 -as 16 -aa .2 -ar 32"}) {
+            const std::string raysPath = kSource + "/scenes/" + rays;
+            const std::string fromOctree =
+                RunCommand(InOctreeFolder("-h " + options + " " + octree + " < " + raysPath));
+            const std::string fromRad = RunCommand(kRtrace + " -h " + options + " " + kSource +
+                                                   "/scenes/" + rad + " < " + raysPath);
+            EXPECT_FALSE(fromOctree.empty());
+            EXPECT_EQ(fromOctree, fromRad) << octree << " " << options;
+        }
+    }
+}
+
+/// A frozen octree stores its reals in 5 bytes, so Radiance's own output for
+/// it differs from its .rad output in the last digit: compare with that.
+TEST(GoldenOctree, FrozenCornellMatchesRadianceOnTheSameOctree) {
+    CompareOutput("cornell_frozen.oct",
+                  InOctreeFolder("-h -ab 0 -ovlpnNm cornell_frozen.oct < " + kSource +
+                                 "/scenes/cornell/cam32.rays"),
+                  kOctrees + "/cornell_frozen_ab0.txt");
+}
+
+TEST(GoldenOctree, FrozenDaylitRoomMatchesRadianceOnTheSameOctree) {
+    CompareOutput("daylit_room_frozen.oct",
+                  InOctreeFolder("-h -ab 0 -ovlpnNm daylit_room_frozen.oct < " + kSource +
+                                 "/scenes/daylit_room/cam32x24.rays"),
+                  kOctrees + "/daylit_room_frozen_ab0.txt");
+}
+
+/// oconv -i: an octree extended with another file (a lamp). -dt 0: with two
+/// sources, -dt's estimates depend on the shadow statistics of earlier rays,
+/// which Radiance's obstructor cache changes (README, Differences).
+TEST(GoldenOctree, IncrementalOctreeMatchesRadiance) {
+    CompareOutput("cornell_plus_lamp.oct",
+                  InOctreeFolder("-h -ab 0 -dt 0 -ovlpnNm cornell_plus_lamp.oct < " + kSource +
+                                 "/scenes/cornell/cam32.rays"),
+                  kOctrees + "/cornell_plus_lamp_ab0.txt");
+}
+
+/// An octree from a `!command`, as rtrace takes "!oconv ...".
+TEST(GoldenOctree, OctreeFromACommand) {
+    const std::string raysPath = kSource + "/scenes/cornell/cam32.rays";
+    EXPECT_EQ(RunCommand(InOctreeFolder("-h -ab 0 -ovlpnNm '!cat cornell_frozen.oct' < " + raysPath)),
+              RunCommand(InOctreeFolder("-h -ab 0 -ovlpnNm cornell_frozen.oct < " + raysPath)));
+}
+
+/// An octree on standard input ("-"), followed there by the rays, as pyradiance
+/// sends it.
+TEST(GoldenOctree, OctreeOnStandardInputFollowedByRays) {
+    const std::string raysPath = kSource + "/scenes/cornell/cam32.rays";
+    EXPECT_EQ(RunCommand("cat " + kOctrees + "/cornell_frozen.oct " + raysPath + " | " + kRtrace +
+                         " -h -ab 0 -ovlpnNm -"),
+              RunCommand(InOctreeFolder("-h -ab 0 -ovlpnNm cornell_frozen.oct < " + raysPath)));
+}
+
+/// rtrace's header copies the octree's header lines before its own command line.
+TEST(GoldenOctree, HeaderCopiesTheOctreeHeader) {
+    const std::string out =
+        RunCommand("echo '0 0 0 0 0 1' | " + InOctreeFolder("cornell_plus_lamp.oct"));
+    EXPECT_EQ(out.rfind("#?RADIANCE\noconv ../../../scenes/cornell/cornell.rad\n"
+                        "oconv -i cornell.oct lamp.rad\n",
+                        0),
+              0u)
+        << out;
+}
+
+/// The octree was made when stale.rad had two objects; it has three now.
+TEST(GoldenOctree, StaleOctreeIsAnError) {
+    const rt::testing::ShellResult r =
+        rt::testing::RunShell("echo '0 0 5 0 0 -1' | " + InOctreeFolder("-h stale.oct 2>&1"));
+    EXPECT_EQ(r.status, 1);
+    // Radiance: "rtrace: fatal - (stale.oct): bad object count; octree stale?"
+    EXPECT_NE(r.out.find("rtrace: fatal - stale.oct: bad object count; octree stale?"),
+              std::string::npos)
+        << r.out;
 }
 
 /// skyplane at -ab 0: the sky is a zero-radius glow, not a light source, so

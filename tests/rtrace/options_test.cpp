@@ -268,9 +268,11 @@ TEST(RtraceOptionsParse, RejectsBadValuesAndUnknownOptions) {
     EXPECT_EQ(ErrorOf({"s.rad", "-ab", "2"}), "command line error at '-ab'");
     EXPECT_EQ(ErrorOf({"-n", "2", "-P", "pf", "s.rad"}),
               "multiprocessing incompatible with persist file");
-    EXPECT_NE(ErrorOf({"scene.oct"}).find("octree input not supported yet, give the .rad files"),
-              std::string::npos);
-    EXPECT_NE(ErrorOf({"!oconv x.rad"}).find("octree input not supported yet"), std::string::npos);
+    // Octrees, octree commands and standard input are scene arguments.
+    EXPECT_EQ(ErrorOf({"scene.oct"}), "(no error)");
+    EXPECT_EQ(ErrorOf({"!oconv x.rad"}), "(no error)");
+    EXPECT_EQ(ErrorOf({"-"}), "(no error)");
+    EXPECT_EQ(ErrorOf({"s.rad", "-x"}), "command line error at '-x'");
     // Radiance's validation accepts these forms.
     EXPECT_EQ(ParseOptions({"-aa", "+.5e-1"}).ambient.accuracy, 0.05);
     EXPECT_EQ(ParseOptions({"-ab", "-0"}).ambient.bounces, 0);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "ambfiles/portable.h"
+#include "core/portable.h"
 
 #include <cmath>
 

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+//
+// The octree reader (scene/octree.h) on octrees made by real Radiance's oconv
+// (tests/data/octree/, make_octrees.sh there): header, cube, scene file names,
+// a frozen scene's objects, and every kind of damage giving a one-line error
+// with the byte offset instead of a crash or a hang.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "core/error.h"
+#include "scene/loader.h"
+#include "scene/octree.h"
+
+namespace rt {
+namespace {
+
+const std::string kData = RT_SOURCE_DIR "/tests/data/octree/";
+
+std::string Bytes(const std::string& file) {
+    std::ifstream in(kData + file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+OctreeFile Read(const std::string& bytes, const std::string& name = "test.oct") {
+    std::istringstream in(bytes);
+    return ReadOctree(in, name);
+}
+
+/// The error ReadOctree gives for `bytes`, or "" if it reads them.
+std::string ErrorOf(const std::string& bytes) {
+    try {
+        Read(bytes);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// Offset of the first byte after the header's blank line.
+std::size_t BinaryStart(const std::string& bytes) { return bytes.find("\n\n") + 2; }
+
+TEST(Octree, NamedScene) {
+    const std::string bytes = Bytes("cornell.oct");
+    std::istringstream probe(bytes);
+    EXPECT_TRUE(LooksLikeOctree(probe));
+    EXPECT_EQ(probe.tellg(), 0);
+    const OctreeFile o = Read(bytes);
+    EXPECT_FALSE(o.frozen());
+    ASSERT_EQ(o.headerLines.size(), 1u);
+    EXPECT_EQ(o.headerLines[0], "oconv ../../../scenes/cornell/cornell.rad");
+    ASSERT_EQ(o.sceneFiles.size(), 1u);
+    EXPECT_EQ(o.sceneFiles[0], "../../../scenes/cornell/cornell.rad");
+    EXPECT_GT(o.objectCount, 0);
+    EXPECT_FALSE(o.leafObjects.empty());
+    EXPECT_LT(o.leafObjects.back(), o.objectCount);
+    // oconv's cube: the scene's bounds grown by 1e-5, origin printed with %.12g.
+    EXPECT_GT(o.cubeSize, 0);
+}
+
+TEST(Octree, FrozenSceneHasTheObjectsOfTheNamedOne) {
+    const OctreeFile named = Read(Bytes("cornell.oct"));
+    const OctreeFile frozen = Read(Bytes("cornell_frozen.oct"));
+    EXPECT_TRUE(frozen.frozen());
+    EXPECT_EQ(frozen.objectCount, named.objectCount);
+    ASSERT_EQ(static_cast<long long>(frozen.objects.size()), frozen.objectCount);
+    EXPECT_EQ(frozen.cubeSize, named.cubeSize);
+    EXPECT_EQ(frozen.leafObjects, named.leafObjects);
+    // The first objects of cornell.rad: the material "white", then surfaces it modifies.
+    EXPECT_EQ(frozen.objects[0].type, "plastic");
+    EXPECT_EQ(frozen.objects[0].name, "white");
+    EXPECT_EQ(frozen.objects[0].modifier, "void");
+    ASSERT_EQ(frozen.objects[0].rargs.size(), 5u);
+    // 5-byte reals: 0.73 within the format's 2^-31 relative resolution.
+    EXPECT_NEAR(frozen.objects[0].rargs[0], 0.73, 1e-9);
+    EXPECT_GE(frozen.objects[0].loc.byteOffset, 0);
+}
+
+TEST(Octree, ForcedCubeIsTheScenesCube) {
+    // oconv -b -10 -10 -10 40 (which, like every cube, oconv grows by 1e-5
+    // on each side): -ar and every other use of the cube follow it.
+    const Scene s = LoadScene({kData + "cornell_cube40.oct"}, SceneLoadOptions{}, nullptr);
+    EXPECT_EQ(s.cubeSize, 40.00002);
+    EXPECT_EQ(s.cubeOrigin, Vec3(-10.00001, -10.00001, -10.00001));
+    ASSERT_EQ(s.headerLines.size(), 1u);
+    EXPECT_EQ(s.headerLines[0], "oconv -f -b -10 -10 -10 40 ../../../scenes/cornell/cornell.rad");
+}
+
+TEST(Octree, OconvIncrementalKeepsBothHeadersAndFiles) {
+    const OctreeFile o = Read(Bytes("cornell_plus_lamp.oct"));
+    ASSERT_EQ(o.headerLines.size(), 2u);
+    EXPECT_EQ(o.headerLines[1], "oconv -i cornell.oct lamp.rad");
+    ASSERT_EQ(o.sceneFiles.size(), 2u);
+    EXPECT_EQ(o.sceneFiles[1], "lamp.rad");
+}
+
+TEST(Octree, EveryTruncationIsAnErrorWithAByteOffset) {
+    for (const char* file : {"cornell.oct", "cornell_frozen.oct"}) {
+        const std::string bytes = Bytes(file);
+        for (std::size_t n = 0; n < bytes.size(); ++n) {
+            const std::string e = ErrorOf(bytes.substr(0, n));
+            ASSERT_FALSE(e.empty()) << file << " cut to " << n << " bytes was read";
+            EXPECT_NE(e.find("test.oct"), std::string::npos) << e;
+            if (n >= BinaryStart(bytes)) {
+                EXPECT_NE(e.find(": byte "), std::string::npos) << n << ": " << e;
+                EXPECT_NE(e.find("truncated"), std::string::npos) << n << ": " << e;
+            }
+        }
+        EXPECT_EQ(ErrorOf(bytes), "");
+    }
+}
+
+TEST(Octree, DamageIsNamedWithItsOffset) {
+    const std::string good = Bytes("cornell_frozen.oct");
+    const std::size_t bin = BinaryStart(good);
+    std::string bad = good;
+    bad[bin + 1] = 0x30;  // magic 0x0130 = 283 + 21: no such object size
+    EXPECT_EQ(ErrorOf(bad), "test.oct: byte " + std::to_string(bin) + ": bad octree magic number 304");
+    EXPECT_NE(ErrorOf("#?RADIANCE\nFORMAT=Radiance_picture\n\n").find("not a Radiance octree"),
+              std::string::npos);
+    EXPECT_NE(ErrorOf("not even a header").find("not a Radiance octree"), std::string::npos);
+    // A node type other than 0, 1, 2 right after the object count.
+    const OctreeFile o = Read(good);
+    std::string node = good;
+    // The tree starts after the cube strings, the empty file list and the 4-byte count.
+    std::size_t at = bin + 2;
+    for (int k = 0; k < 4; ++k) at = node.find('\0', at) + 1;
+    at += 1 + 4;  // the empty file list's NUL, then the object count
+    node[at] = 7;
+    EXPECT_EQ(ErrorOf(node), "test.oct: byte " + std::to_string(at) + ": bad octree node type");
+    EXPECT_GT(o.objectCount, 0);
+}
+
+TEST(Octree, StaleObjectCount) {
+    OctreeFile o = Read(Bytes("cornell.oct"));
+    std::vector<SceneObject> objects(static_cast<std::size_t>(o.objectCount) + 1);
+    try {
+        CheckOctreeObjects(o, objects, "cornell.oct");
+        FAIL() << "accepted a stale octree";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad object count; octree stale?"), std::string::npos);
+    }
+    // Same count, but a leaf names a material: "modifier in tree".
+    objects.pop_back();
+    for (auto& obj : objects) obj.type = "polygon";
+    objects[static_cast<std::size_t>(o.leafObjects.front())].type = "plastic";
+    EXPECT_THROW(CheckOctreeObjects(o, objects, "cornell.oct"), Error);
+}
+
+}  // namespace
+}  // namespace rt
