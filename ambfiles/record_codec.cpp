@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ambfiles/dircode.h"
+#include "core/conventions.h"
 #include "core/portable.h"
 
 namespace rt {
@@ -73,6 +74,7 @@ std::optional<AmbientRecord> DecodeRecord(std::span<const std::uint8_t, kRecordB
     for (double rad : r.radius) {
         if (!(rad > 0.0 && rad < kHuge)) return std::nullopt;
     }
+    if (r.radius[0] > r.radius[1] + kFtiny) return std::nullopt;
     for (int i = 0; i < 3; ++i) {
         if (!(r.value[i] >= 0.0 && r.value[i] < kHuge)) return std::nullopt;
     }

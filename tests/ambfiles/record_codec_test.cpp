@@ -287,9 +287,15 @@ TEST(RecordCodec, ValidityFollowsAmbvalOK) {
     EXPECT_TRUE(rejects([](AmbientRecord& r) { r.normal = {}; }));
     EXPECT_TRUE(rejects([](AmbientRecord& r) { r.uAxis = {}; }));
     EXPECT_TRUE(rejects([](AmbientRecord& r) { r.weight = std::nan(""); }));
-    // Not checked by Radiance: level, corral, rad[0] > rad[1].
+    // rad[0] <= rad[1] + FTINY: a first radius larger than the second is one
+    // flipped bit away from a valid record, and Radiance stops reading there.
+    EXPECT_TRUE(rejects([](AmbientRecord& r) { r.radius[0] = 5; }));
+    EXPECT_TRUE(rejects([](AmbientRecord& r) { r.radius[0] = r.radius[1] + 2e-6; }));
+    EXPECT_FALSE(rejects([](AmbientRecord& r) { r.radius[0] = r.radius[1] + 0.5e-6; }));
+    EXPECT_FALSE(rejects([](AmbientRecord& r) { r.radius[0] = 0.25; }));
+    // Not checked by Radiance: level, corral.
     EXPECT_FALSE(rejects([](AmbientRecord& r) { r.level = 200; }));
-    EXPECT_FALSE(rejects([](AmbientRecord& r) { r.radius[0] = 5; }));
+    EXPECT_FALSE(rejects([](AmbientRecord& r) { r.corral = 0xffffffffu; }));
     EXPECT_TRUE(DecodeRecord(RecordBytes{}) == std::nullopt);  // all zero bytes
     RecordBytes ff;
     ff.fill(0xff);
