@@ -69,12 +69,30 @@ private:
     std::function<void()> unlock_;
 };
 
+/// What a non-regular file is, for the error message.
+std::string FileKind(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "a special file";
+}
+
 }  // namespace
 
 SharedAmbientFile::SharedAmbientFile(std::string path, const AmbientHeaderParams& headerParams,
                                      WarningSink warn)
     : path_(std::move(path)), warn_(std::move(warn)) {
-    fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    // Only a regular file can hold records: /dev/null swallows them, a FIFO
+    // would block the first read forever, a directory cannot be written.
+    // Checked before opening (which would block on some special files) and
+    // again on the descriptor, in case the path changed in between.
+    if (struct stat st{}; stat(path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        ThrowUserError(Quoted(path_) + ": ambient file is " + FileKind(st.st_mode) +
+                       ", not a regular file");
+    }
+    fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NONBLOCK, 0666);
     if (fd_ < 0) {
         const int err = errno;
         // Not writable, but it exists: load it read-only, as Radiance does.
@@ -88,6 +106,14 @@ SharedAmbientFile::SharedAmbientFile(std::string path, const AmbientHeaderParams
         }
     }
     ownerPid_ = getpid();
+    if (struct stat st{}; fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+        const std::string kind = FileKind(st.st_mode);
+        close(fd_);
+        fd_ = -1;
+        ThrowUserError(Quoted(path_) + ": ambient file is " + kind + ", not a regular file");
+    }
+    // O_NONBLOCK only kept open() from waiting on a special file.
+    fcntl(fd_, F_SETFL, fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
     try {
         Lock(readOnly_ ? F_RDLCK : F_WRLCK);
         LockGuard guard([this] { Unlock(); });

@@ -328,6 +328,29 @@ TEST(SharedAmbientFile, EmptyFileGetsHeader) {
     EXPECT_TRUE(SpecRead(ReadBytes(path)).ok);
 }
 
+TEST(SharedAmbientFile, SpecialFilesAreRefusedByKind) {
+    TempDir dir;
+    const std::string fifo = dir.File("pipe.amb");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const std::string link = dir.File("null.amb");
+    ASSERT_EQ(symlink("/dev/null", link.c_str()), 0);
+    const std::string folder = dir.File("folder.amb");
+    ASSERT_EQ(mkdir(folder.c_str(), 0700), 0);
+    for (const auto& [path, kind] : {std::pair{std::string("/dev/null"), "a character device"},
+                                     std::pair{link, "a character device"},
+                                     std::pair{fifo, "a FIFO"},
+                                     std::pair{folder, "a directory"}}) {
+        try {
+            SharedAmbientFile f(path, Params(), {});
+            FAIL() << "accepted " << path;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()),
+                      "\"" + path + "\": ambient file is " + kind + ", not a regular file");
+            EXPECT_EQ(e.ExitCode(), 1);
+        }
+    }
+}
+
 TEST(SharedAmbientFile, MissingDirectoryIsAClearError) {
     TempDir dir;
     const std::string path = dir.File("no/such/dir/a.amb");
