@@ -23,6 +23,7 @@
 extern "C" int FuzzSceneEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzRaysEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzAmbfileEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzCalEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -70,6 +71,10 @@ TEST(FuzzRegression, RaysCorpusAndRegressions) {
 
 TEST(FuzzRegression, AmbfileCorpusAndRegressions) {
     EXPECT_GT(Replay("ambfile", &FuzzAmbfileEntry), 0u);
+}
+
+TEST(FuzzRegression, CalCorpusAndRegressions) {
+    EXPECT_GT(Replay("cal", &FuzzCalEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

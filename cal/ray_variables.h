@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+//
+// rtrace's ray quantities as function-language channels (radiance-functions.md
+// §10.3): channel n is bound to the global name kRayVariableNames[n - 1], e.g.
+// Dx = $1. A shading ChannelSource returns these, in pattern space.
+#pragma once
+
+#include <array>
+
+namespace rt::cal {
+
+// clang-format off
+enum RayChannel : int {
+    kDx = 1, kDy, kDz,     // ray direction (towards the surface), unit length
+    kNx, kNy, kNz,         // geometric normal, not flipped for back faces
+    kPx, kPy, kPz,         // hit point; 0 0 0 for a ray that hit nothing
+    kT,                    // total path length from the eye × S
+    kRdot,                 // cosine between -D and N in [-1, 1]
+    kS,                    // world-to-pattern scale factor
+    kTx, kTy, kTz,         // world origin in pattern space
+    kIx, kIy, kIz,         // world x unit vector in pattern space
+    kJx, kJy, kJz,         // world y unit vector
+    kKx, kKy, kKz,         // world z unit vector
+    kTs,                   // length of this shadow-ray segment chain × S
+    kLu, kLv,              // mesh (u, v); 0 elsewhere
+};
+// clang-format on
+
+inline constexpr int kRayChannelCount = 27;
+
+inline constexpr std::array<const char*, kRayChannelCount> kRayVariableNames = {
+    "Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "T",  "Rdot", "S",  "Tx", "Ty",
+    "Tz", "Ix", "Iy", "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "Ts",   "Lu", "Lv"};
+
+}  // namespace rt::cal
