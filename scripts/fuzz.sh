@@ -4,20 +4,22 @@
 # build-fuzz/artifacts/TARGET/; replay one with build-fuzz/bin/fuzz_TARGET FILE and,
 # once fixed, copy it to tests/fuzz/regressions/TARGET/.
 #
-#   scripts/fuzz.sh scene|rays|ambfile SECONDS
+#   scripts/fuzz.sh scene|rays|ambfile|cal|octree SECONDS
 #
 # Environment: BUILD (default build-fuzz), RT_FUZZ_MERGE=0 skips the final merge,
 # extra libFuzzer flags in FUZZ_FLAGS.
 set -euo pipefail
-target=${1:?usage: fuzz.sh scene|rays|ambfile SECONDS}
-seconds=${2:?usage: fuzz.sh scene|rays|ambfile SECONDS}
+target=${1:?usage: fuzz.sh scene|rays|ambfile|cal|octree SECONDS}
+seconds=${2:?usage: fuzz.sh scene|rays|ambfile|cal|octree SECONDS}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD:-$root/build-fuzz}
 case $target in
   scene) max_len=4096; keep_len=1024; extra=(-dict="$root/tests/fuzz/scene.dict") ;;
   rays) max_len=4096; keep_len=512; extra=() ;;
   ambfile) max_len=65536; keep_len=2048; extra=() ;;
-  *) echo "fuzz.sh: unknown target $target (scene, rays, ambfile)" >&2; exit 2 ;;
+  cal) max_len=2048; keep_len=512; extra=() ;;
+  octree) max_len=16384; keep_len=4096; extra=() ;;
+  *) echo "fuzz.sh: unknown target $target (scene, rays, ambfile, cal, octree)" >&2; exit 2 ;;
 esac
 
 if [[ ! -f $build/CMakeCache.txt ]]; then

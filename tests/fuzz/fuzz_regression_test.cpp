@@ -24,6 +24,7 @@ extern "C" int FuzzSceneEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzRaysEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzAmbfileEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzCalEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzOctreeEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -75,6 +76,10 @@ TEST(FuzzRegression, AmbfileCorpusAndRegressions) {
 
 TEST(FuzzRegression, CalCorpusAndRegressions) {
     EXPECT_GT(Replay("cal", &FuzzCalEntry), 0u);
+}
+
+TEST(FuzzRegression, OctreeCorpusAndRegressions) {
+    EXPECT_GT(Replay("octree", &FuzzOctreeEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

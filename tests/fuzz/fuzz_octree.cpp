@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+//
+// Fuzz target: arbitrary bytes as an octree file through ReadOctree, and for
+// a frozen octree its objects through the stale checks and BuildScene, as
+// LoadScene would take them. rt::Error is the expected way to reject input;
+// any other exception, a crash, UB, a hang or memory out of proportion to the
+// input is a finding.
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "scene/loader.h"
+#include "scene/octree.h"
+#include "tests/fuzz/fuzz_entry.h"
+
+extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
+    const std::string bytes(reinterpret_cast<const char*>(data), size);
+    std::istringstream in(bytes);
+    const rt::WarningSink warn = [](const std::string&) {};
+    try {
+        if (!rt::LooksLikeOctree(in)) return 0;
+        const rt::OctreeFile octree = rt::ReadOctree(in, "fuzz.oct");
+        if (octree.frozen()) {
+            rt::CheckOctreeObjects(octree, octree.objects, "fuzz.oct");
+            static_cast<void>(rt::BuildScene(octree.objects, warn));
+        }
+    } catch (const rt::Error&) {
+        // Rejected input: expected.
+    }
+    return 0;
+}
