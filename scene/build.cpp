@@ -15,6 +15,8 @@
 #include "scene/loader.h"
 #include "scene/object_types.h"
 #include "scene/reader.h"
+#include "scene/transform.h"
+#include "cal/search.h"
 
 namespace rt {
 namespace {
@@ -73,11 +75,32 @@ std::string Describe(const SceneObject& object) {
 }
 
 /// One modifier definition, in file order. Mirrors Radiance's OBJREC enough to
-/// tell a pure alias synonym from an alias that re-modifies its reference.
+/// walk modifier chains and to tell a pure alias synonym from an alias that
+/// re-modifies its reference. Exactly one of material and pattern is set.
 struct ModifierDef {
     int material = -1;  // index into Scene::materials
+    int pattern = -1;   // index into Scene::patterns
     int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
 };
+
+/// The pattern types lazyrad evaluates, with where their string arguments
+/// put the function file: brightfunc `v file [xf]`, colorfunc `r g b file [xf]`.
+struct PatternSpec {
+    const char* name;
+    PatternType type;
+    int expressions;
+};
+constexpr PatternSpec kPatternSpecs[] = {
+    {"brightfunc", PatternType::BrightFunc, 1},
+    {"colorfunc", PatternType::ColorFunc, 3},
+};
+
+const PatternSpec* FindPatternSpec(const std::string& type) {
+    for (const PatternSpec& spec : kPatternSpecs) {
+        if (type == spec.name) return &spec;
+    }
+    return nullptr;
+}
 
 class SceneBuilder {
 public:
@@ -86,6 +109,8 @@ public:
     void Add(const SceneObject& object) {
         if (object.type == "alias") {
             AddAlias(object);
+        } else if (FindPatternSpec(object.type) != nullptr) {
+            AddPattern(object);
         } else if (!IsSurfaceObjectType(object.type)) {
             AddMaterial(object);
         } else {
@@ -95,6 +120,7 @@ public:
 
     Scene Finish() {
         SetCube();
+        if (functions_) scene_.functions = std::move(functions_);
         return std::move(scene_);
     }
 
@@ -132,33 +158,104 @@ private:
     }
 
     void AddAlias(const SceneObject& object) {
-        const std::string& reference = object.sargs.at(0);
+        // The text reader always gives an alias its reference; a frozen
+        // octree's objects come with whatever argument counts it holds.
+        if (object.sargs.size() != 1 || !object.rargs.empty()) BadArgs(object);
+        const std::string& reference = object.sargs[0];
         const auto ref = Lookup(reference);
         if (!ref) {
             ThrowUserError(object.loc, "undefined alias reference \"" + PrintableWord(reference) +
                                            "\" in alias \"" + PrintableWord(object.name) + "\"");
         }
-        const ModifierDef& target = defs_[static_cast<std::size_t>(*ref)];
+        const ModifierDef target = defs_[static_cast<std::size_t>(*ref)];
         const int modifier = object.modifier == "inherit" ? target.modifier : ResolveModifier(object);
         if (modifier == target.modifier) {
             // Pure synonym (readobj.c): shading goes straight to the reference.
-            Define(object.name, ModifierDef{target.material, *ref});
+            Define(object.name, target);
             return;
         }
-        if (modifier != -1) {
-            ThrowUserError(object.loc,
-                           "alias \"" + PrintableWord(object.name) + "\" puts modifier \"" +
-                               PrintableWord(object.modifier) + "\" on \"" +
-                               PrintableWord(reference) +
-                               "\": materials with a non-void modifier (patterns, textures) "
-                               "are not supported");
+        // Same type and arguments as the reference, under the alias's own name,
+        // with its own modifier (radiance-functions.md §11.12).
+        if (target.pattern >= 0) {
+            Pattern copy = scene_.patterns[static_cast<std::size_t>(target.pattern)];
+            copy.name = object.name;
+            copy.loc = object.loc;
+            scene_.patterns.push_back(std::move(copy));
+            Define(object.name,
+                   ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
+            return;
         }
-        // Same type and arguments as the reference, under the alias's own name.
         Material copy = scene_.materials[static_cast<std::size_t>(target.material)];
         copy.name = object.name;
         copy.loc = object.loc;
+        copy.patterns = MaterialChain(object, modifier);
         scene_.materials.push_back(std::move(copy));
-        Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1});
+        Define(object.name,
+               ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1, modifier});
+    }
+
+    /// The patterns of a material's own modifier chain from definition `def`
+    /// on, in chain order. A material on that chain is Radiance's fatal
+    /// "conflicting material".
+    std::vector<int> MaterialChain(const SceneObject& object, int def) const {
+        std::vector<int> patterns;
+        for (int d = def; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
+            const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
+            if (m.material >= 0) {
+                ThrowUserError(object.loc,
+                               "conflicting material \"" +
+                                   PrintableWord(scene_.materials[static_cast<std::size_t>(m.material)].name) +
+                                   "\" in the modifiers of " + Describe(object));
+            }
+            patterns.push_back(m.pattern);
+        }
+        return patterns;
+    }
+
+    /// The function language, set up at the first pattern: rtrace's ray
+    /// variables and rayinit.cal (RAYPATH, else lazyrad's own).
+    cal::Program& Functions() {
+        if (!functions_) {
+            functions_ = std::make_shared<cal::Program>(cal::Options{}, warn_);
+            functions_->DefineRayVariables();
+            functions_->LoadRayinit(searchPath_);
+        }
+        return *functions_;
+    }
+
+    void AddPattern(const SceneObject& object) {
+        const PatternSpec& spec = *FindPatternSpec(object.type);
+        const auto& words = object.sargs;
+        const std::size_t fileAt = static_cast<std::size_t>(spec.expressions);
+        if (words.size() < fileAt + 1) BadArgs(object);
+        Pattern pattern;
+        pattern.name = object.name;
+        pattern.type = spec.type;
+        pattern.owner = Describe(object);
+        pattern.args = object.rargs;
+        pattern.loc = object.loc;
+        // The transform: the first word after the file that starts with '-',
+        // and everything after it (words in between are ignored, §10.2).
+        std::size_t xfAt = fileAt + 1;
+        while (xfAt < words.size() && words[xfAt].rfind('-', 0) != 0) ++xfAt;
+        if (xfAt < words.size()) {
+            const ParsedTransform xf = ParseTransformArgs(words, xfAt);
+            if (xf.next != words.size()) {
+                ThrowUserError(object.loc, "bad transform for " + Describe(object));
+            }
+            pattern.patternFromWorld = Inverse(xf.transform);
+            pattern.patternFromWorld.scale = std::fabs(pattern.patternFromWorld.scale);
+        }
+        cal::Program& functions = Functions();
+        const std::string where = object.loc.ToString();
+        const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
+        for (std::size_t k = 0; k < fileAt; ++k) {
+            pattern.values.push_back(
+                functions.CompileExpression(words[k], where + ": " + pattern.owner, context));
+        }
+        scene_.patterns.push_back(std::move(pattern));
+        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1,
+                                        ResolveModifier(object)});
     }
 
     void AddMaterial(const SceneObject& object) {
@@ -167,12 +264,6 @@ private:
             ThrowUserError(object.loc, "unsupported material type '" + object.type + "'");
         }
         const int modifier = ResolveModifier(object);
-        if (modifier != -1) {
-            ThrowUserError(object.loc, Describe(object) + " has modifier \"" +
-                                           PrintableWord(object.modifier) +
-                                           "\": materials with a non-void modifier (patterns, "
-                                           "textures) are not supported");
-        }
         const int nreals = static_cast<int>(object.rargs.size());
         if (static_cast<int>(object.sargs.size()) > spec->maxStrings || nreals < spec->minReals ||
             nreals > spec->maxReals) {
@@ -198,8 +289,9 @@ private:
                 Fail(object, "zero focus vector");
             }
         }
+        material.patterns = MaterialChain(object, modifier);
         scene_.materials.push_back(std::move(material));
-        Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1});
+        Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1, modifier});
     }
 
     void AddSurface(const SceneObject& object) {
@@ -213,7 +305,16 @@ private:
         Surface surface;
         surface.name = object.name;
         surface.modifierName = object.modifier;
-        surface.material = modifier == -1 ? -1 : defs_[static_cast<std::size_t>(modifier)].material;
+        // Patterns may sit between the surface and its material; a chain
+        // without a material leaves the surface as void.
+        for (int d = modifier; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
+            const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
+            if (m.material >= 0) {
+                surface.material = m.material;
+                break;
+            }
+            surface.patterns.push_back(m.pattern);
+        }
         surface.loc = object.loc;
         bool keep = true;
         if (object.type == "polygon") {
@@ -419,6 +520,8 @@ private:
     }
 
     const WarningSink& warn_;
+    cal::SearchPath searchPath_ = cal::SearchPath::FromEnvironment();
+    std::shared_ptr<cal::Program> functions_;
     Scene scene_;
     std::vector<ModifierDef> defs_;
     std::unordered_map<std::string, int> byName_;

@@ -4,14 +4,18 @@
 // resolved, and the materials they refer to (radiance-notes.md §2.3–2.8).
 // Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
 //
-// Only what lazyrad can shade is represented: a scene using any other modifier
-// type is rejected at load time with "file:line: unsupported material type 'X'".
+// Only what lazyrad can shade is represented: materials and the patterns
+// brightfunc and colorfunc. A scene using any other modifier type is rejected
+// at load time with "file:line: unsupported material type 'X'".
 #pragma once
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "cal/program.h"
+#include "core/affine.h"
 #include "core/conventions.h"
 #include "core/error.h"
 #include "core/vecmath.h"
@@ -33,13 +37,33 @@ enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface
 };
 
-/// A material (the only modifiers lazyrad supports). Argument counts are
-/// validated at load time against radiance-notes.md §2.6.
+/// A material. Argument counts are validated at load time against
+/// radiance-notes.md §2.6.
 struct Material {
     std::string name;           // identifier; for an alias with its own modifier, the alias name
     MaterialType type;
     std::vector<double> args;   // real arguments as written
     int alternate = -1;         // illum/mirror alternate material (index), -1 for none or void
+    /// The patterns of the material's own modifier chain (Radiance's
+    /// raytexture(m->omod)), indices into Scene::patterns in chain order.
+    std::vector<int> patterns;
+    FileLoc loc;
+};
+
+enum class PatternType { BrightFunc, ColorFunc };
+
+/// A pattern (radiance-functions.md §11.2, §11.4): function-language
+/// expressions evaluated at each hit in the pattern's own space, multiplying
+/// the ray's pattern colour. Compiled into Scene::functions at load time.
+struct Pattern {
+    std::string name;
+    PatternType type;
+    std::string owner;                    // `brightfunc "name"`, for messages
+    std::vector<cal::Expression> values;  // brightfunc: 1, colorfunc: r g b
+    std::vector<double> args;             // real arguments: arg(n), A1, …
+    /// World to pattern space (the inverse of the transform arguments, §10.1);
+    /// its scale is the positive factor S (mirrors do not make it negative).
+    Transform patternFromWorld;
     FileLoc loc;
 };
 
@@ -94,12 +118,21 @@ struct Surface {
     SurfaceType type;
     std::string modifierName;   // immediate modifier as written ("void" if none) — rtrace -om
     int material = -1;          // index into Scene::materials after aliases; -1 for void
+    /// Patterns between the surface and its material (a chain such as
+    /// `m light l; l brightfunc b; b polygon p`), indices into Scene::patterns;
+    /// the material's own chain is Material::patterns.
+    std::vector<int> patterns;
     std::variant<Polygon, Sphere, Cone, Ring, DistantSource> shape;
     FileLoc loc;
 };
 
 struct Scene {
     std::vector<Material> materials;
+    std::vector<Pattern> patterns;
+    /// The function language holding every pattern's files and expressions;
+    /// null when the scene has no patterns. Read-only once built: each
+    /// shading thread evaluates with its own cal::Context.
+    std::shared_ptr<const cal::Program> functions;
     std::vector<Surface> surfaces;   // in file order; includes distant sources
     /// oconv's cube (§2.2): bounding box of all non-source surfaces grown by
     /// 1e-5 each side; `cubeSize` is its largest extent. Drives -ar and miss distances.

@@ -12,19 +12,6 @@
 namespace rt {
 namespace {
 
-Transform Multiply(const Transform& a, const Transform& b) {
-    Transform r;
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            double sum = 0;
-            for (int k = 0; k < 4; ++k) sum += a.m[i][k] * b.m[k][j];
-            r.m[i][j] = sum;
-        }
-    }
-    r.scale = a.scale * b.scale;
-    return r;
-}
-
 /// xf.c's badarg(): the `count` words after `i` exist and are numbers of the given
 /// kinds ('f' real, 'i' integer).
 bool ValuesOk(const std::vector<std::string>& args, std::size_t i, const char* kinds) {
@@ -61,20 +48,6 @@ Vec3 GetVec(const std::vector<double>& r, std::size_t at) { return {r[at], r[at 
 
 }  // namespace
 
-Vec3 Transform::Point(const Vec3& p) const {
-    Vec3 r;
-    for (int j = 0; j < 3; ++j) r[j] = p.x * m[0][j] + p.y * m[1][j] + p.z * m[2][j] + m[3][j];
-    return r;
-}
-
-Vec3 Transform::Vector(const Vec3& v) const {
-    Vec3 r;
-    for (int j = 0; j < 3; ++j) r[j] = v.x * m[0][j] + v.y * m[1][j] + v.z * m[2][j];
-    return r;
-}
-
-Transform Compose(const Transform& a, const Transform& b) { return Multiply(a, b); }
-
 ParsedTransform ParseTransformArgs(const std::vector<std::string>& args, std::size_t start) {
     Transform total;
     Transform group;  // transforms since the last -i, applied `repeat` times
@@ -82,11 +55,11 @@ ParsedTransform ParseTransformArgs(const std::vector<std::string>& args, std::si
     const auto flush = [&] {
         // Step by step as xf.c (same rounding) for sane counts; by squaring beyond,
         // so "-i 1000000000" stays cheap.
-        for (; repeat > 0 && repeat <= 1024; --repeat) total = Multiply(total, group);
+        for (; repeat > 0 && repeat <= 1024; --repeat) total = Compose(total, group);
         Transform power = group;
         for (; repeat > 0; repeat >>= 1) {
-            if (repeat & 1) total = Multiply(total, power);
-            power = Multiply(power, power);
+            if (repeat & 1) total = Compose(total, power);
+            power = Compose(power, power);
         }
         repeat = 0;
     };
@@ -122,7 +95,7 @@ ParsedTransform ParseTransformArgs(const std::vector<std::string>& args, std::si
         } else {
             break;
         }
-        group = Multiply(group, step);
+        group = Compose(group, step);
     }
     flush();
     return {total, i};

@@ -12,24 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "core/affine.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
 
 namespace rt {
-
-/// Affine transform acting on row vectors, p' = p·M (Radiance's MAT4 + XF).
-struct Transform {
-    double m[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    /// Overall uniform scale, negative when the transform mirrors (odd number of -m*
-    /// or negative -s).
-    double scale = 1;
-
-    Vec3 Point(const Vec3& p) const;
-    Vec3 Vector(const Vec3& v) const;
-};
-
-/// `a` then `b` (row vectors: the matrix product a·b).
-Transform Compose(const Transform& a, const Transform& b);
 
 struct ParsedTransform {
     Transform transform;

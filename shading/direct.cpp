@@ -77,7 +77,8 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
         sray.SetHit(*hit);
     }
     sray.rcol = Rgb();
-    ShadeLight(sray, scene_.materials[surface.material]);
+    ApplyPatterns(sray, surface.patterns);
+    ShadeMaterial(sray, scene_.materials[surface.material]);
     return sray.rcol;
 }
 
@@ -155,7 +156,7 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         c.coef = coef(s.dir, s.omega);
         if (Bright(c.coef) <= 0.0) continue;
         const LightSource& src = sources_[s.source];
-        if (src.shape == LightSource::Shape::Distant || src.parallelogram) {
+        if ((src.shape == LightSource::Shape::Distant || src.parallelogram) && !src.patterned) {
             // The sample lands on the source: its radiance is the material's
             // colour from the front (spot cones and proximity were checked
             // when sampling), black from behind.

@@ -38,6 +38,7 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
       warn_(std::move(warn)),
       rng_(shading.seed),
       cache_(std::move(cache)) {
+    if (scene.functions) functionContext_ = std::make_unique<cal::Context>(*scene.functions);
     // Radiance's hidden "Lamb" material for -i/-I: reflectance π turns the
     // reflected radiance into irradiance.
     lambertian_.name = "Lamb";
@@ -139,7 +140,9 @@ void Integrator::Trace(TracedRay& ray) {
         ray.rot = kFhuge;
         ray.rop = ray.org + ray.dir * ray.rmax;
     } else if (HitDistantSource(ray)) {
-        ShadeLight(ray, scene_.materials[scene_.surfaces[ray.surface].material]);
+        const Surface& source = scene_.surfaces[ray.surface];
+        ApplyPatterns(ray, source.patterns);
+        ShadeMaterial(ray, scene_.materials[source.material]);
     } else {
         ray.rot = kFhuge;
         ray.rop = ray.org;
@@ -151,6 +154,7 @@ void Integrator::Shade(TracedRay& ray) {
     const Surface& surface = scene_.surfaces[ray.surface];
     if (surface.material < 0) return;  // void: nothing to shade, black
     const Material& m = scene_.materials[surface.material];
+    ApplyPatterns(ray, surface.patterns);
     // -i: the first opaque, non-emitting surface reached along primary and
     // transmitted rays is measured as a Lambertian irradiance meter. The
     // transparent surfaces before it are passed straight through, unattenuated

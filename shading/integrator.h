@@ -73,7 +73,7 @@ struct TracedRay {
     Vec3 ron;                  // normal at rop, flipped by materials toward the ray
     Vec3 geometricNormal;      // unflipped normal as the surface defines it
     double rod = 0;            // -Dot(dir, ron): > 0 on the front
-    Rgb pcol{1, 1, 1};         // pattern colour (always 1: no patterns yet)
+    Rgb pcol{1, 1, 1};         // pattern colour: the product of the patterns met
     bool irradianceHit = false;  // -I pretend hit (no object)
     bool lambertian = false;   // -i/-I: shade with Radiance's hidden Lamb material
 
@@ -180,6 +180,9 @@ private:
     void ShadeGlass(TracedRay& ray, const Material& m);
     void ShadeDielectric(TracedRay& ray, const Material& m); // dielectric, interface
     void ShadeMaterial(TracedRay& ray, const Material& m);   // dispatch on type
+    /// Multiplies ray.pcol by each pattern of `patterns` (indices into
+    /// Scene::patterns), evaluated for this ray (patterns.cpp).
+    void ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns);
     /// -I: a measuring point lying in the plane of a wall (a sensor on an
     /// edge or in a corner) would send half its sample rays through that
     /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point
@@ -193,6 +196,10 @@ private:
     ShadingOptions shading_;
     AmbientOptions ambient_;
     WarningSink warn_;
+    /// This thread's evaluation state of the scene's function language (null
+    /// without patterns), and the patterns whose compute errors were reported.
+    std::unique_ptr<cal::Context> functionContext_;
+    std::unordered_set<int> patternWarned_;
     std::vector<LightSource> sources_;
     Material lambertian_;   // -i/-I: plastic with reflectance pi
     Rng rng_;

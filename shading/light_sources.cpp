@@ -255,6 +255,7 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
         LightSource src;
         src.surface = i;
         src.material = s.material;
+        src.patterned = !s.patterns.empty() || !m.patterns.empty();
         switch (s.type) {
             case SurfaceType::Polygon: SetUpPolygon(src, s, randomFrames, rng); break;
             case SurfaceType::Ring: SetUpRing(src, s, randomFrames, rng); break;

@@ -36,6 +36,7 @@ struct LightSource {
     Vec3 spotAim;              // unit
     double spotFocal = 0;      // focal length behind the source centre
     bool parallelogram = false;  // flat quad whose samples always land on it
+    bool patterned = false;      // its radiance comes through patterns, per sample ray
     // Shadow-test statistics used by direct() to estimate untested samples.
     long nhits = 1;
     long ntests = 2;

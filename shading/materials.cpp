@@ -30,6 +30,9 @@ bool IsFlat(const Scene& scene, const TracedRay& ray) {
 }  // namespace
 
 void Integrator::ShadeMaterial(TracedRay& ray, const Material& m) {
+    // The material's own chain (Radiance's raytexture(m->omod)), before it
+    // computes anything.
+    ApplyPatterns(ray, m.patterns);
     switch (m.type) {
         case MaterialType::Plastic:
         case MaterialType::Metal:

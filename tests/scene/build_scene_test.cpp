@@ -68,8 +68,10 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: unsupported material type 'BRTDfunc'");
     EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
               "t.rad:1: unsupported material type 'antimatter'");
-    EXPECT_EQ(BuildError("void colorfunc c 4 r g b . 0 0\n"),
-              "t.rad:1: unsupported material type 'colorfunc'");
+    EXPECT_EQ(BuildError("void texfunc t 4 dx dy dz . 0 0\n"),
+              "t.rad:1: unsupported material type 'texfunc'");
+    EXPECT_EQ(BuildError("void mixfunc m 4 a b c . 0 0\n"),
+              "t.rad:1: unsupported material type 'mixfunc'");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
     EXPECT_EQ(BuildError("void instance i 1 x.oct 0 0\n"),
               "t.rad:1: unsupported object type 'instance' (octree instances and meshes are not "
@@ -77,9 +79,9 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
     EXPECT_EQ(BuildError("void mesh m 1 x.rtm 0 0\n"),
               "t.rad:1: unsupported object type 'mesh' (octree instances and meshes are not "
               "supported)");
+    // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
-              "t.rad:2: plastic \"b\" has modifier \"a\": materials with a non-void modifier "
-              "(patterns, textures) are not supported");
+              "t.rad:2: conflicting material \"a\" in the modifiers of plastic \"b\"");
 }
 
 TEST(BuildScene, UndefinedModifiers) {
@@ -117,7 +119,7 @@ TEST(BuildScene, AliasesResolveAsRadianceDoes) {
         "void plastic base 0 0 5 .2 .3 .4 0 0\n"
         "inherit alias syn base\n"          // pure synonym
         "void alias same base\n"            // same modifier as base (void): synonym
-        "void alias copy syn\n"             // syn's modifier is base, not void: a copy
+        "void alias copy syn\n"             // syn is base, whose modifier is void: a synonym
         "syn polygon p1 0 0 9 0 0 0 1 0 0 0 1 0\n"
         "same polygon p2 0 0 9 0 0 0 1 0 0 0 1 0\n"
         "copy polygon p3 0 0 9 0 0 0 1 0 0 0 1 0\n");
@@ -125,17 +127,27 @@ TEST(BuildScene, AliasesResolveAsRadianceDoes) {
     EXPECT_EQ(scene.surfaces[0].material, 0);
     EXPECT_EQ(scene.surfaces[0].modifierName, "syn");
     EXPECT_EQ(scene.surfaces[1].material, 0);
-    ASSERT_EQ(scene.materials.size(), 2u);
-    EXPECT_EQ(scene.surfaces[2].material, 1);
-    EXPECT_EQ(scene.materials[1].name, "copy");
-    EXPECT_EQ(scene.materials[1].type, MaterialType::Plastic);
-    EXPECT_EQ(scene.materials[1].args, scene.materials[0].args);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.surfaces[2].material, 0);
     EXPECT_EQ(scene.surfaces[2].modifierName, "copy");
+
+    // With another modifier, an alias is a copy of its reference's type and
+    // arguments under that modifier (radiance-functions.md §11.12).
+    const Scene patterned = BuildText(
+        "void brightfunc b3 2 3 . 0 0\n"
+        "void light l1 0 0 3 1 2 3\n"
+        "b3 alias l1b l1\n"
+        "l1b polygon p1 0 0 9 0 0 0 1 0 0 0 1 0\n");
+    ASSERT_EQ(patterned.materials.size(), 2u);
+    EXPECT_EQ(patterned.materials[1].name, "l1b");
+    EXPECT_EQ(patterned.materials[1].args, patterned.materials[0].args);
+    EXPECT_EQ(patterned.materials[1].patterns, std::vector<int>{0});
+    EXPECT_TRUE(patterned.materials[0].patterns.empty());
+    EXPECT_EQ(patterned.surfaces[0].material, 1);
 
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\nvoid plastic b 0 0 5 1 1 1 0 0\n"
                          "a alias c b\n"),
-              "t.rad:3: alias \"c\" puts modifier \"a\" on \"b\": materials with a non-void "
-              "modifier (patterns, textures) are not supported");
+              "t.rad:3: conflicting material \"a\" in the modifiers of alias \"c\"");
 }
 
 TEST(BuildScene, PolygonNormalAreaOffset) {
@@ -341,6 +353,68 @@ TEST(MaterialType, NamesAndClasses) {
     EXPECT_TRUE(IsLightType(MaterialType::Glow));
     EXPECT_TRUE(IsLightType(MaterialType::Spotlight));
     EXPECT_FALSE(IsLightType(MaterialType::Mirror));
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+TEST(BuildScenePatterns, ChainsOnBothSidesOfTheMaterial) {
+    const Scene scene = BuildText(
+        "void brightfunc b3 2 3 . 0 0\n"
+        "b3 brightfunc b2 2 2 . 0 0\n"          // a pattern modified by a pattern
+        "b2 light l1 0 0 3 1 2 3\n"             // the material's own chain: b2, b3
+        "l1 colorfunc c 4 1 2 Px . 0 0\n"       // between the surface and the material
+        "c polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n");
+    ASSERT_EQ(scene.patterns.size(), 3u);
+    EXPECT_EQ(scene.patterns[0].type, PatternType::BrightFunc);
+    EXPECT_EQ(scene.patterns[2].type, PatternType::ColorFunc);
+    EXPECT_EQ(scene.patterns[2].values.size(), 3u);
+    EXPECT_EQ(scene.patterns[2].owner, "colorfunc \"c\"");
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.materials[0].patterns, (std::vector<int>{1, 0}));
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    EXPECT_EQ(scene.surfaces[0].material, 0);
+    EXPECT_EQ(scene.surfaces[0].patterns, std::vector<int>{2});
+    EXPECT_EQ(scene.surfaces[0].modifierName, "c");
+    EXPECT_NE(scene.functions, nullptr);
+    // Without patterns, no function language at all.
+    EXPECT_EQ(BuildText("void plastic w 0 0 5 .5 .5 .5 0 0\n").functions, nullptr);
+}
+
+TEST(BuildScenePatterns, TransformIsInvertedIntoPatternSpace) {
+    const Scene scene = BuildText(
+        "void brightfunc b 9 Px . junk -s 2 -t 1 0 0\n0\n0\n"
+        "void brightfunc m 3 Px . -mx\n0\n0\n");
+    ASSERT_EQ(scene.patterns.size(), 2u);
+    // The arguments scale by 2, then move by 1 along x; pattern space undoes it.
+    const Transform& f = scene.patterns[0].patternFromWorld;
+    const Vec3 p = f.Point(Vec3(3, 4, 6));
+    EXPECT_NEAR(p.x, 1, 1e-12);
+    EXPECT_NEAR(p.y, 2, 1e-12);
+    EXPECT_NEAR(p.z, 3, 1e-12);
+    EXPECT_NEAR(f.scale, 0.5, 1e-15);
+    // A mirror's scale factor S is positive.
+    EXPECT_EQ(scene.patterns[1].patternFromWorld.scale, 1.0);
+}
+
+TEST(BuildScenePatterns, Errors) {
+    EXPECT_EQ(BuildError("void brightfunc b 1 Px 0 0\n"),
+              "t.rad:1: bad number of arguments for brightfunc \"b\"");
+    EXPECT_EQ(BuildError("void brightfunc b 4 Px . -t 1\n0\n0\n"),
+              "t.rad:1: bad transform for brightfunc \"b\"");
+    EXPECT_NE(BuildError("void brightfunc b 2 Px+*2 .\n0\n0\n").find("t.rad:1: brightfunc \"b\":1:"),
+              std::string::npos);
+    // A missing function file is a system error, as in Radiance.
+    EXPECT_EQ(testing::ErrorMessage(
+                  [] { BuildText("void brightfunc b 2 x no_such_file_anywhere.cal\n0\n0\n"); },
+                  Error::Kind::System),
+              "t.rad:1: cannot find function file \"no_such_file_anywhere.cal\"");
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\nvoid brightfunc b 2 1 . 0 0\n"
+                         "b alias c a\nc plastic d 0 0 5 1 1 1 0 0\n"),
+              "t.rad:4: conflicting material \"c\" in the modifiers of plastic \"d\"");
 }
 
 }  // namespace
