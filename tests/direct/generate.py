@@ -50,6 +50,8 @@ import subprocess
 import sys
 import tempfile
 
+from matrix_data import mean_and_sem, write_expected
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 OUT = os.path.join(ROOT, "tests", "data", "direct")
@@ -219,13 +221,7 @@ def run_radiance(files, rays, repeat, options, tmp, rays_dir=OUT):
     sems = []
     if repeat > 1 and r.returncode == 0:
         assert len(rows) == len(lines) * repeat, (files, rays, options)
-        groups = [rows[i * repeat:(i + 1) * repeat] for i in range(len(lines))]
-        rows = [[sum(g[k][j] for k in range(repeat)) / repeat for j in range(len(g[0]))]
-                for g in groups]
-        # Standard error of each mean.
-        sems = [[math.sqrt(sum((g[k][j] - m[j]) ** 2 for k in range(repeat))
-                           / (repeat - 1) / repeat) for j in range(len(m))]
-                for g, m in zip(groups, rows)]
+        rows, sems = mean_and_sem(rows, len(lines), repeat)
     return r.returncode, err, rows, sems
 
 
@@ -354,22 +350,11 @@ def main():
             blocks.append(("fatcylinder_light", name, files, "sensors_cylinder.pts", 1, options,
                            "exact", status, err, rows, [], []))
 
-    with open(os.path.join(OUT, "expected.txt"), "w") as f:
-        f.write("# Real Radiance 5.4a's answers for tests/direct/direct_matrix_test.cpp,\n"
-                "# written by tests/direct/generate.py (format described there).\n")
-        for (group, name, files, rays, repeat, options, check, status, err, rows, notes,
-             sems) in blocks:
-            f.write(f"case {group} {name}\nfiles {' '.join(files)}\nrays {rays} {repeat}\n"
-                    f"options {options}\ncheck {check}\nstatus {status}\n")
-            for line in err:
-                f.write(f"err {line}\n")
-            for line in notes:
-                f.write(f"note {line}\n")
-            for row in rows:
-                f.write("out " + " ".join("%.7g" % v for v in row) + "\n")
-            for row in sems:
-                f.write("sem " + " ".join("%.4g" % v for v in row) + "\n")
-            f.write("end\n")
+    keys = "group name files rays repeat options check status err rows notes sems".split()
+    write_expected(os.path.join(OUT, "expected.txt"),
+                   "# Real Radiance 5.4a's answers for tests/direct/direct_matrix_test.cpp,\n"
+                   "# written by tests/direct/generate.py (format described there).\n",
+                   [dict(zip(keys, b)) for b in blocks])
     print(f"{len(blocks)} runs of {len(scenes)} scenes written to {OUT}", file=sys.stderr)
 
 

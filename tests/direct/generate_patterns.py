@@ -15,6 +15,8 @@ import subprocess
 import sys
 import tempfile
 
+from matrix_data import mean_and_sem, write_expected
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 OUT = os.path.join(ROOT, "tests", "data", "patterns")
@@ -58,12 +60,7 @@ def radiance(files, rays, repeat, options, tmp):
     err = [l.replace(os.path.join(BIN, "rtrace"), "rtrace") for l in r.stderr.splitlines()]
     sems = []
     if repeat > 1 and r.returncode == 0:
-        groups = [rows[i * repeat:(i + 1) * repeat] for i in range(len(lines))]
-        rows = [[sum(g[k][j] for k in range(repeat)) / repeat for j in range(len(g[0]))]
-                for g in groups]
-        sems = [[math.sqrt(sum((g[k][j] - m[j]) ** 2 for k in range(repeat))
-                           / (repeat - 1) / repeat) for j in range(len(m))]
-                for g, m in zip(groups, rows)]
+        rows, sems = mean_and_sem(rows, len(lines), repeat)
     return r.returncode, err, rows, sems
 
 
@@ -222,23 +219,12 @@ def main():
             blocks.append((group, name, files, rays, lazy_repeat, options, check, status, err,
                            rows, sems if check == "noise" else [],
                            [f"Radiance's mean over {ref_repeat} repeats"] if check == "noise" else []))
-    with open(os.path.join(OUT, "expected.txt"), "w") as f:
-        f.write("# Real Radiance 5.4a's answers for the pattern and sky cases of\n"
-                "# tests/direct/direct_matrix_test.cpp, written by\n"
-                "# tests/direct/generate_patterns.py (format as in generate.py).\n")
-        for (group, name, files, rays, repeat, options, check, status, err, rows, sems,
-             notes) in blocks:
-            f.write(f"case {group} {name}\nfiles {' '.join(files)}\nrays {rays} {repeat}\n"
-                    f"options {options}\ncheck {check}\nstatus {status}\n")
-            for line in err:
-                f.write(f"err {line}\n")
-            for line in notes:
-                f.write(f"note {line}\n")
-            for row in rows:
-                f.write("out " + " ".join("%.7g" % v for v in row) + "\n")
-            for row in sems:
-                f.write("sem " + " ".join("%.4g" % v for v in row) + "\n")
-            f.write("end\n")
+    keys = "group name files rays repeat options check status err rows sems notes".split()
+    write_expected(os.path.join(OUT, "expected.txt"),
+                   "# Real Radiance 5.4a's answers for the pattern and sky cases of\n"
+                   "# tests/direct/direct_matrix_test.cpp, written by\n"
+                   "# tests/direct/generate_patterns.py (format as in generate.py).\n",
+                   [dict(zip(keys, b)) for b in blocks])
     print(f"{len(blocks)} runs written to {OUT}", file=sys.stderr)
 
 
