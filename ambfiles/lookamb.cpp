@@ -3,16 +3,21 @@
 // lookamb: print the records of an ambient file as text, or turn that text back
 // into a binary ambient file. Same options and output as Radiance's lookamb
 // (src/rt/lookamb.c; radiance-notes.md §5.9):
-//   lookamb [-d] [-h] [-r|-u] [file]   (standard input if no file)
+//   lookamb [-d] [-h] [-r|-u|-s] [file]   (standard input if no file)
 //   -d  one TAB-separated line per record instead of the labelled form
 //   -h  no header: on output omit it; with -r, write a new one instead of copying
 //   -r  reverse: read text (labelled, or -d form with -d), write binary to stdout
 //   -u  the same as -r (lazyrad's synonym; Radiance has only -r)
+//   -s  salvage (lazyrad's): write a binary file of every valid record of a
+//       damaged one, re-synchronising after misaligned bytes (ambfiles/salvage.h),
+//       with one line on stderr saying what was dropped; the input is only read
 // Reading stops silently at the first invalid or truncated record, as Radiance's.
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <iterator>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +26,7 @@
 #include "ambfiles/header.h"
 #include "core/portable.h"
 #include "ambfiles/record_codec.h"
+#include "ambfiles/salvage.h"
 
 namespace {
 
@@ -28,6 +34,7 @@ struct Options {
     bool dataOnly = false;
     bool header = true;
     bool reverse = false;
+    bool salvage = false;
 };
 
 bool ReadAll(std::FILE* fp, std::string& out) {
@@ -127,6 +134,31 @@ int Reverse(const Options& opt, const std::string& input, int argc, char** argv)
     return 0;
 }
 
+// Damaged binary -> binary of its valid records.
+int Salvage(const std::string& input, const char* prog, const char* name) {
+    const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(input.data()),
+                                              input.size());
+    std::string problem;
+    const std::optional<rt::SalvageResult> result = rt::SalvageAmbientFile(bytes, &problem);
+    if (!result) {
+        std::fprintf(stderr, "%s: %s: not an ambient file (%s)\n", prog, name, problem.c_str());
+        return 1;
+    }
+    if (std::fwrite(result->file.data(), 1, result->file.size(), stdout) != result->file.size()) {
+        return 1;
+    }
+    if (result->damagedStretches == 0) {
+        std::fprintf(stderr, "%s: %s: %zu records, no damage\n", prog, name, result->records);
+    } else {
+        std::fprintf(stderr,
+                     "%s: %s: %zu records recovered; %zu bytes dropped in %zu damaged stretches, "
+                     "the first at byte %lld\n",
+                     prog, name, result->records, result->droppedBytes, result->damagedStretches,
+                     static_cast<long long>(result->firstDamage));
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -140,6 +172,7 @@ int main(int argc, char** argv) {
                 opt.reverse = true;
                 break;
             case 'h': opt.header = false; break;
+            case 's': opt.salvage = true; break;
             default:
                 std::fprintf(stderr, "%s: unknown option '%s'\n", argv[0], argv[i]);
                 return 1;
@@ -160,7 +193,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: read error\n", argv[0]);
         return 1;
     }
-    const int rc = opt.reverse ? Reverse(opt, input, argc, argv) : Look(opt, input, argv[0]);
+    const int rc = opt.salvage   ? Salvage(input, argv[0], i < argc ? argv[i] : "<stdin>")
+                   : opt.reverse ? Reverse(opt, input, argc, argv)
+                                 : Look(opt, input, argv[0]);
     if (std::fflush(stdout) != 0) return 1;
     return rc;
 }

@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstring>
 #include <functional>
+#include <set>
+#include <string_view>
 #include <utility>
 
 #include "ambfiles/record_codec.h"
@@ -133,6 +135,7 @@ SharedAmbientFile::SharedAmbientFile(std::string path, const AmbientHeaderParams
                 ThrowSys("cannot write header to ambient file", err);
             }
             recordsStart_ = static_cast<std::int64_t>(header.size());
+            known_.assign(header.begin(), header.end());
         } else {
             // Read until the header parses; headers are short, files may be huge.
             std::vector<std::uint8_t> head;
@@ -155,6 +158,7 @@ SharedAmbientFile::SharedAmbientFile(std::string path, const AmbientHeaderParams
                                "); refusing to use it");
             }
             recordsStart_ = static_cast<std::int64_t>(parse.header->recordsOffset);
+            known_.assign(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(recordsStart_));
         }
         lastPos_ = recordsStart_;
     } catch (...) {
@@ -176,7 +180,12 @@ SharedAmbientFile::SharedAmbientFile(SharedAmbientFile&& o) noexcept
       appendsDisabled_(o.appendsDisabled_),
       recordsStart_(o.recordsStart_),
       lastPos_(o.lastPos_),
-      ownerPid_(o.ownerPid_) {}
+      ownerPid_(o.ownerPid_),
+      known_(std::move(o.known_)),
+      pendingRestore_(std::move(o.pendingRestore_)),
+      restored_(o.restored_),
+      warnedRestore_(o.warnedRestore_),
+      faults_(std::move(o.faults_)) {}
 
 SharedAmbientFile& SharedAmbientFile::operator=(SharedAmbientFile&& o) noexcept {
     if (this != &o) {
@@ -189,6 +198,11 @@ SharedAmbientFile& SharedAmbientFile::operator=(SharedAmbientFile&& o) noexcept 
         recordsStart_ = o.recordsStart_;
         lastPos_ = o.lastPos_;
         ownerPid_ = o.ownerPid_;
+        known_ = std::move(o.known_);
+        pendingRestore_ = std::move(o.pendingRestore_);
+        restored_ = o.restored_;
+        warnedRestore_ = o.warnedRestore_;
+        faults_ = std::move(o.faults_);
     }
     return *this;
 }
@@ -267,6 +281,37 @@ void SharedAmbientFile::ReopenAfterFork() {
     ownerPid_ = getpid();
 }
 
+// True when the 67 bytes before `recordEnd` are still the record we know there.
+bool SharedAmbientFile::StillHolds(std::int64_t recordEnd, std::int64_t flen) const {
+    if (recordEnd > flen) return false;
+    std::uint8_t buf[kRecordBytes];
+    const std::int64_t at = recordEnd - static_cast<std::int64_t>(kRecordBytes);
+    if (ReadAt(fd_, buf, kRecordBytes, at) != static_cast<ssize_t>(kRecordBytes)) return false;
+    return std::memcmp(buf, known_.data() + at, kRecordBytes) == 0;
+}
+
+// How much of what we know the file still holds: lastPos_ when nothing was
+// removed, a record boundary when records were cut off (and possibly written
+// over), 0 when the file was emptied, -1 when it was cut inside the header.
+std::int64_t SharedAmbientFile::IntactPrefix(std::int64_t flen) const {
+    if (flen < recordsStart_) return flen == 0 ? 0 : -1;
+    const auto rec = static_cast<std::int64_t>(kRecordBytes);
+    const std::int64_t known = (lastPos_ - recordsStart_) / rec;
+    if (known == 0 || StillHolds(lastPos_, flen)) return lastPos_;
+    // Record k ends at recordsStart_ + (k+1)·67. A cut keeps everything before
+    // it, so the intact records form a prefix: find the first one that is not.
+    std::int64_t lo = 0, hi = known - 1;  // the answer is in [lo, hi]; record hi is not intact
+    while (lo < hi) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        if (StillHolds(recordsStart_ + (mid + 1) * rec, flen)) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return recordsStart_ + lo * rec;
+}
+
 std::vector<AmbientRecord> SharedAmbientFile::Exchange(std::span<const AmbientRecord> ours) {
     if (fd_ < 0) throw Error(Error::Kind::Internal, "ambient file used after move");
     if (getpid() != ownerPid_) {
@@ -297,22 +342,47 @@ std::vector<AmbientRecord> SharedAmbientFile::Exchange(std::span<const AmbientRe
 
     Lock(readOnly_ ? F_RDLCK : F_WRLCK);
     LockGuard guard([this] { Unlock(); });
-    const std::int64_t startPos = lastPos_;
     const std::int64_t flen = FileSize(fd_);
     if (flen < 0) ThrowSys("cannot stat ambient file", errno);
-    if (flen < lastPos_) {
+
+    // Has another program removed what we know (see the header)?
+    const std::int64_t intact = IntactPrefix(flen);
+    if (intact < 0) {
         appendsDisabled_ = true;
-        Warn(FileLoc{path_, 0, flen}.ToString() + ": ambient file shrank below the " +
-             std::to_string(lastPos_) + " bytes already read (changed by another program?); "
+        Warn(FileLoc{path_, 0, flen}.ToString() + ": ambient file shrank below its " +
+             std::to_string(recordsStart_) + "-byte header (changed by another program?); "
              "no more values will be saved to it");
         return foreign;
     }
+    if (intact < lastPos_) {
+        const auto from = known_.begin() + static_cast<std::ptrdiff_t>(intact);
+        pendingRestore_.insert(pendingRestore_.end(), from, known_.end());
+        known_.erase(from, known_.end());
+        lastPos_ = intact;
+    }
+    const std::int64_t startPos = lastPos_;
 
     // Read what others appended since our last visit.
     std::vector<std::uint8_t> in(static_cast<std::size_t>(flen - lastPos_));
     const ssize_t got = ReadAt(fd_, in.data(), in.size(), lastPos_);
     if (got < 0) ThrowSys("cannot read ambient file", errno);
     in.resize(static_cast<std::size_t>(got));
+
+    // Removed records another process has already put back are neither
+    // appended again nor handed to the caller, who has them.
+    std::set<std::string_view> toRestore;
+    const auto recordAt = [](const std::vector<std::uint8_t>& bytes, std::size_t at) {
+        return std::string_view(reinterpret_cast<const char*>(bytes.data()) + at, kRecordBytes);
+    };
+    std::size_t headerBytes = 0;  // of pendingRestore_: a file cut to zero lost its header
+    if (!pendingRestore_.empty() && startPos == 0) {
+        headerBytes = static_cast<std::size_t>(recordsStart_);
+    }
+    for (std::size_t at = headerBytes; at + kRecordBytes <= pendingRestore_.size();
+         at += kRecordBytes) {
+        toRestore.insert(recordAt(pendingRestore_, at));
+    }
+
     std::size_t used = 0;
     bool corrupt = false;
     while (in.size() - used >= kRecordBytes) {
@@ -322,9 +392,10 @@ std::vector<AmbientRecord> SharedAmbientFile::Exchange(std::span<const AmbientRe
             corrupt = true;
             break;
         }
-        foreign.push_back(*r);
+        if (toRestore.erase(recordAt(in, used)) == 0) foreign.push_back(*r);
         used += kRecordBytes;
     }
+    known_.insert(known_.end(), in.begin(), in.begin() + static_cast<std::ptrdiff_t>(used));
     lastPos_ += static_cast<std::int64_t>(used);
 
     if (corrupt) {
@@ -339,10 +410,15 @@ std::vector<AmbientRecord> SharedAmbientFile::Exchange(std::span<const AmbientRe
         }
         return foreign;
     }
-    if (lastPos_ != flen && !readOnly_) {
+    if (readOnly_) {
+        pendingRestore_.clear();  // cannot put them back; the cache still has them
+        return foreign;
+    }
+    if (lastPos_ != flen) {
         // A partial record: a writer died or ran out of space mid-write. Appends are
         // whole records under this lock, so nobody is still writing it.
         if (ftruncate(fd_, static_cast<off_t>(lastPos_)) != 0) {
+            known_.resize(static_cast<std::size_t>(startPos));
             lastPos_ = startPos;
             ThrowSys("cannot truncate damaged ambient file", errno);
         }
@@ -350,17 +426,51 @@ std::vector<AmbientRecord> SharedAmbientFile::Exchange(std::span<const AmbientRe
              std::to_string(flen - lastPos_) + " bytes) at end of file");
     }
 
+    // What to append: the removed records nobody has put back (and the header,
+    // if the file was cut to nothing), then ours.
+    std::vector<std::uint8_t> restore(pendingRestore_.begin(),
+                                      pendingRestore_.begin() +
+                                          static_cast<std::ptrdiff_t>(headerBytes));
+    std::size_t restoredNow = 0;
+    for (std::size_t at = headerBytes; at + kRecordBytes <= pendingRestore_.size();
+         at += kRecordBytes) {
+        if (toRestore.count(recordAt(pendingRestore_, at)) == 0) continue;
+        restore.insert(restore.end(), pendingRestore_.begin() + static_cast<std::ptrdiff_t>(at),
+                       pendingRestore_.begin() + static_cast<std::ptrdiff_t>(at + kRecordBytes));
+        ++restoredNow;
+    }
+    if (!restore.empty()) out.insert(out.begin(), restore.begin(), restore.end());
+
     if (!out.empty()) {
-        if (const int err = WriteAt(fd_, out.data(), out.size(), lastPos_); err != 0) {
+        std::size_t keep = out.size();
+        if (faults_.keepBytes) keep = std::min(keep, faults_.keepBytes(out.size()));
+        int err = WriteAt(fd_, out.data(), keep, lastPos_);
+        if (err == 0 && keep < out.size()) {
+            if (faults_.afterShortWrite) faults_.afterShortWrite();
+            err = ENOSPC;
+        }
+        if (err != 0) {
             // Leave only whole records behind, then report.
             const bool cleaned = ftruncate(fd_, static_cast<off_t>(lastPos_)) == 0;
+            known_.resize(static_cast<std::size_t>(startPos));
             lastPos_ = startPos;  // a retry re-reads the foreign records too
             throw Error(Error::Kind::System,
                         "cannot write ambient file " + Quoted(path_) + ": " + std::strerror(err) +
                             (cleaned ? " (partial append removed; the file holds whole records)"
                                      : " (and could not remove the partial append)"));
         }
+        known_.insert(known_.end(), out.begin(), out.end());
         lastPos_ += static_cast<std::int64_t>(out.size());
+    }
+    pendingRestore_.clear();
+    if (restoredNow > 0) {
+        restored_ += restoredNow;
+        if (!warnedRestore_) {
+            warnedRestore_ = true;
+            Warn(Quoted(path_) + ": " + std::to_string(restoredNow) +
+                 " ambient values already saved were removed by another program; appended "
+                 "them again (further cases are only counted)");
+        }
     }
     return foreign;
 }

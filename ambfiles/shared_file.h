@@ -31,6 +31,16 @@
 //    write(2) itself can stop a multi-page write at a page boundary (Linux checks
 //    for fatal signals between pages), leaving a torn last record; the next sync by
 //    anyone (ours, or Radiance's ambsync) cuts or overwrites it.
+//  * Records we synced or read that another program removed are appended again.
+//    Real Radiance loads the file at start-up without its lock, so it can see a
+//    record we are still writing as a torn tail, cut it off, and then append its
+//    own records over ours. Each sync checks (one 67-byte read) that the last
+//    record we know is still where we left it; if not, it finds the longest
+//    intact prefix (binary search: a cut keeps everything before it) and appends
+//    the records after it again, from our copy of every byte we know (67 bytes a
+//    record, beside the caller's cache), saying so once on stderr. Records
+//    another process already put back are not duplicated. A file emptied to zero
+//    bytes gets its header back; one cut inside its header is left alone.
 //
 // Not thread-safe: one object per thread, or a mutex around it. The destructor
 // does not sync (as Radiance's ambdone()); call Sync() first. After fork() call
@@ -39,7 +49,9 @@
 // other, and closing one drops the other's lock.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <sys/types.h>
@@ -86,6 +98,22 @@ public:
     /// each other. Keeps the read position (the child knows what the parent knew).
     void ReopenAfterFork();
 
+    /// Records synced or read earlier that another program removed from the
+    /// file and this object appended again (for rtrace -t's summary).
+    std::size_t RestoredRecords() const { return restored_; }
+
+    /// Fault injection for the stress test. `keepBytes(n)` is asked before an
+    /// append of n bytes and returns how many of them reach the file; the rest
+    /// fail as a full disk does (ENOSPC), and that path removes the partial
+    /// record. `afterShortWrite`, if set, runs between the short write and the
+    /// clean-up with the lock held, so a test can SIGKILL the process there and
+    /// leave a torn record for the next sync to cut.
+    struct WriteFaults {
+        std::function<std::size_t(std::size_t)> keepBytes;
+        std::function<void()> afterShortWrite;
+    };
+    void InjectWriteFaults(WriteFaults faults) { faults_ = std::move(faults); }
+
     const std::string& Path() const { return path_; }
     bool ReadOnly() const { return readOnly_; }
     /// True after damage was found: nothing more will be appended.
@@ -99,6 +127,8 @@ private:
     void Warn(const std::string& message) const;
     [[noreturn]] void ThrowSys(const std::string& what, int err) const;
     std::vector<AmbientRecord> Exchange(std::span<const AmbientRecord> ours);
+    bool StillHolds(std::int64_t recordEnd, std::int64_t flen) const;
+    std::int64_t IntactPrefix(std::int64_t flen) const;
 
     std::string path_;
     WarningSink warn_;
@@ -108,6 +138,14 @@ private:
     std::int64_t recordsStart_ = 0;  // offset of the first record
     std::int64_t lastPos_ = 0;       // everything before this has been read by us
     pid_t ownerPid_ = 0;             // process that opened fd_ (see ReopenAfterFork)
+    /// Every byte of the file before lastPos_, header included, as we read or
+    /// wrote it: what is appended again if another program removes it.
+    std::vector<std::uint8_t> known_;
+    /// Removed records not yet appended again (kept across a failed write).
+    std::vector<std::uint8_t> pendingRestore_;
+    std::size_t restored_ = 0;
+    bool warnedRestore_ = false;
+    WriteFaults faults_;
 };
 
 }  // namespace rt

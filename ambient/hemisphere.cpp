@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "ambient/options.h"
 #include "core/check.h"
 #include "core/conventions.h"
 
@@ -24,9 +25,13 @@ constexpr int kMinSuperSamples = 9;
 /// ...and at least this many rows, so every division has a neighbour above or
 /// below for the variance estimate.
 constexpr int kMinSuperSampleRows = 2;
-/// Keeps nt·np inside int for absurd -ad values (16384 rows = 8.4e8
-/// divisions); Radiance has no such cap.
-constexpr int kMaxRows = 16384;
+/// The most rows: nt·np stays at or below kMaxAmbientDivisions however large
+/// -ad·weight is, so memory per hemisphere is bounded even for callers that
+/// bypass the front end's -ad check (1155 rows × 3629 columns = 4 191 495).
+constexpr int kMaxRows = 1155;
+constexpr int ColumnsFor(int rows) { return static_cast<int>(kPi * rows + 0.5); }
+static_assert(kMaxRows * ColumnsFor(kMaxRows) <= kMaxAmbientDivisions);
+static_assert((kMaxRows + 1) * ColumnsFor(kMaxRows + 1) > kMaxAmbientDivisions);
 
 /// One (row t, column p) cell of the hemisphere.
 struct Division {
@@ -69,7 +74,7 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
     if (x > 0)
         rows = static_cast<int>(std::sqrt(std::min(x, 1e9)) + 0.5);
     rows = std::clamp(rows, options.caching ? 3 : 1, kMaxRows);
-    int columns = static_cast<int>(kPi * rows + 0.5);
+    int columns = ColumnsFor(rows);
     if (!options.caching && rows == 1) {
         // Without the cache each sample carries 1/total of the weight. Ward's
         // minimum row of 1×3 is kept while divisions·weight is at least 1/3:
@@ -337,8 +342,14 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     h.complete = failed == 0;
     h.anySample = failed < rows * columns;
 
+    // -as·weight, but at most one extra sample per division on average: the
+    // priorities are fixed before any extra sample is taken, so beyond that the
+    // extra samples only pile up in the same few divisions, and a larger -ad
+    // spends them better (it also refines radii and gradients). Radiance has no
+    // such clamp (README, Differences).
     const double extraWanted = std::max(0.0, options.superSamples * options.weight);
-    const int extra = static_cast<int>(std::min(extraWanted, 1e9) + 0.5);
+    const int extra = static_cast<int>(
+        std::min(extraWanted, static_cast<double>(rows) * columns) + 0.5);
     if (h.complete && extra >= kMinSuperSamples && rows >= kMinSuperSampleRows) {
         NeighbourPriorities(divs);
         double total = 0;

@@ -43,7 +43,8 @@ using AmbientTraceRef = FunctionRef<std::optional<AmbientSample>(const Vec3& dir
 
 struct HemisphereOptions {
     int divisions = 1024;    // -ad: about this many first-pass samples at weight 1
-    int superSamples = 512;  // -as: extra samples at weight 1, sent where neighbours differ most
+    int superSamples = 512;  // -as: extra samples at weight 1, sent where neighbours differ most;
+                             // at most one per division on average (nt·np)
     double weight = 1;       // record weight: sample counts scale with it (0.5^level)
     bool caching = true;     // -aa > 0: at least 3 rows; without cache at least 1
 };
@@ -69,7 +70,7 @@ struct Hemisphere {
 
 /// Ward's division counts for `options` (radiance-notes.md §4.12): rows
 /// nt = (int)(sqrt(divisions·weight/π) + 0.5), at least 3 when caching and 1
-/// otherwise (and at most 16384, to keep nt·np an int), and columns
+/// otherwise (and at most 1155, so nt·np <= kMaxAmbientDivisions), and columns
 /// np = (int)(π·nt + 0.5); without the cache, a single row shrinks to one
 /// column once divisions·weight falls below 1/3, so that deep recursions stay
 /// linear (Radiance: one sample below ad·wt = 1). SampleHemisphere uses exactly these; the caller

@@ -11,6 +11,15 @@
 
 namespace rt {
 
+/// The most divisions one hemisphere may have, and so the largest -ad the front
+/// end accepts (above it: a one-line error, not a silent clamp). Each division
+/// holds 48 bytes while its hemisphere is sampled, and a hemisphere's samples
+/// nest hemispheres of at most half its weight, so one thread holds at most
+/// about 2 × 48 B × 2^22 = 400 MB of divisions. Radiance has no limit: it
+/// allocates ad·wt samples of 40 bytes and fails with "out of memory in
+/// samp_hemi" only when malloc does.
+inline constexpr int kMaxAmbientDivisions = 1 << 22;
+
 struct AmbientOptions {
     Rgb value;                  // -av: ambient radiance used where bounces stop
     int valueWeight = 0;        // -aw: weight of -av in the running average

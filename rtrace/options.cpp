@@ -545,6 +545,12 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
     }
     if (o.processes > 1 && !o.persistFile.empty())
         ThrowUserError("multiprocessing incompatible with persist file");
+    // Radiance takes any int and runs out of memory (a 23 GB process at -ad 5e8);
+    // one hemisphere's divisions are bounded instead (ambient/options.h).
+    if (o.ambient.divisions > kMaxAmbientDivisions) {
+        ThrowUserError("-ad " + std::to_string(o.ambient.divisions) + " is above the limit of " +
+                       std::to_string(kMaxAmbientDivisions) + " hemisphere divisions");
+    }
     o.shading.irradiance = o.immediateIrradiance ? IrradianceMode::Immediate
                            : o.irradianceAtHit   ? IrradianceMode::AtHit
                                                  : IrradianceMode::Off;

@@ -6,13 +6,17 @@
 #include <atomic>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <filesystem>
+#include <mutex>
+#include <new>
 #include <optional>
 #include <string>
 #include <system_error>
 #include <thread>
 
 #include "ambfiles/shared_file.h"
+#include "core/error.h"
 #include "raycore/raycore.h"
 #include "scene/loader.h"
 #include "shading/renderer.h"
@@ -66,7 +70,12 @@ public:
 
     RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax,
                          std::uint64_t rayIndex) override {
-        RayResult r = renderers_[0]->TraceInput(org, dir, rmax, rayIndex);
+        RayResult r;
+        try {
+            r = renderers_[0]->TraceInput(org, dir, rmax, rayIndex);
+        } catch (const std::bad_alloc&) {
+            ThrowOutOfMemory();
+        }
         SyncIfDue();
         return r;
     }
@@ -74,23 +83,48 @@ public:
     void TraceBatch(std::span<const RayQuery> rays, std::span<RayResult> out) override {
         const size_t threads = std::min(renderers_.size(), rays.size());
         if (threads <= 1) {
-            for (size_t i = 0; i < rays.size(); ++i) {
-                out[i] = renderers_[0]->TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
-                                                   rays[i].index);
+            try {
+                for (size_t i = 0; i < rays.size(); ++i) {
+                    out[i] = renderers_[0]->TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
+                                                       rays[i].index);
+                }
+            } catch (const std::bad_alloc&) {
+                ThrowOutOfMemory();
             }
         } else {
             // Each thread takes the next unclaimed ray; results land in input
-            // order whatever finishes first.
+            // order whatever finishes first. An exception escaping a jthread
+            // would call std::terminate, so the first one is kept and rethrown
+            // here, after the others stop taking rays.
             std::atomic<size_t> next{0};
+            std::mutex failureMutex;
+            std::exception_ptr failure;
             auto work = [&](Renderer& renderer) {
-                for (size_t i; (i = next.fetch_add(1)) < rays.size();) {
-                    out[i] = renderer.TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
-                                                 rays[i].index);
+                try {
+                    for (size_t i; (i = next.fetch_add(1)) < rays.size();) {
+                        out[i] = renderer.TraceInput(rays[i].org, rays[i].dir, rays[i].rmax,
+                                                     rays[i].index);
+                    }
+                } catch (...) {
+                    next.store(rays.size());
+                    const std::lock_guard<std::mutex> lock(failureMutex);
+                    if (!failure) failure = std::current_exception();
                 }
             };
-            std::vector<std::jthread> pool;
-            for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, std::ref(*renderers_[t]));
-            work(*renderers_[0]);
+            {
+                std::vector<std::jthread> pool;
+                for (size_t t = 1; t < threads; ++t) {
+                    pool.emplace_back(work, std::ref(*renderers_[t]));
+                }
+                work(*renderers_[0]);
+            }
+            if (failure) {
+                try {
+                    std::rethrow_exception(failure);
+                } catch (const std::bad_alloc&) {
+                    ThrowOutOfMemory();
+                }
+            }
         }
         SyncIfDue();
     }
@@ -135,13 +169,21 @@ public:
             out.append(i ? "/" : " ");
             out.append(std::to_string(s.recordsPerLevel[i]));
         }
-        char buf[360];
+        // Records another program removed from the ambient file and we put back
+        // (ambfiles/shared_file.h); named only when it happened.
+        const size_t restored = file_ ? file_->RestoredRecords() : 0;
+        const std::string putBack =
+            restored > 0 ? "; " + std::to_string(restored) + " put back after another program "
+                                                             "removed them"
+                         : std::string();
+        char buf[420];
         std::snprintf(buf, sizeof buf,
-                      " (+%zu from the ambient file), %llu lookups, %.1f%% interpolated, %llu "
+                      " (+%zu from the ambient file%s), %llu lookups, %.1f%% interpolated, %llu "
                       "hemispheres, %llu rays traced + %llu shadow rays + %llu leak-test rays; "
                       "thread time %.2f s "
                       "sampling, %.2f s lookups, %.2f s direct",
-                      recordsLoaded_, static_cast<unsigned long long>(s.ambientLookups),
+                      recordsLoaded_, putBack.c_str(),
+                      static_cast<unsigned long long>(s.ambientLookups),
                       s.ambientLookups ? 100.0 * double(s.ambientHits) / double(s.ambientLookups)
                                        : 0.0,
                       static_cast<unsigned long long>(s.hemispheres),
@@ -153,6 +195,12 @@ public:
     }
 
 private:
+    /// Radiance's SYSTEM error for a failed allocation ("out of memory in
+    /// samp_hemi", exit 2), never "internal - std::bad_alloc".
+    [[noreturn]] static void ThrowOutOfMemory() {
+        throw Error(Error::Kind::System, "out of memory while tracing rays");
+    }
+
     void OpenAmbientFile(const std::vector<std::string>& sceneFiles, const RtraceOptions& options) {
         const std::string& path = options.ambient.file;
         if (path.empty()) return;

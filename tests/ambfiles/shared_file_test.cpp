@@ -294,6 +294,137 @@ TEST(SharedAmbientFile, GarbageRecordStopsReadingAndNothingIsAppended) {
     EXPECT_EQ(ReadBytes(path), original);
 }
 
+// ----- issue 18: records another program removes are appended again -----
+
+std::vector<AmbientRecord> Batch(int writer, int first, int count) {
+    std::vector<AmbientRecord> batch;
+    for (int i = 0; i < count; ++i) batch.push_back(Tagged(writer, first + i));
+    return batch;
+}
+
+/// Ids of the records in the file, in file order; every record must be valid
+/// and the file must end on a record boundary.
+std::vector<std::int64_t> IdsInFile(const std::string& path) {
+    const SpecFile spec = SpecRead(ReadBytes(path));
+    EXPECT_TRUE(spec.ok);
+    EXPECT_EQ(spec.trailing, 0u);
+    std::vector<std::int64_t> ids;
+    for (const SpecRecord& r : spec.records) {
+        EXPECT_TRUE(r.valid);
+        ids.push_back(static_cast<std::int64_t>(r.pos[0]) * 1000000 +
+                      static_cast<std::int64_t>(r.pos[1]));
+    }
+    return ids;
+}
+
+std::multiset<std::int64_t> IdsOf(std::initializer_list<std::vector<AmbientRecord>> batches) {
+    std::multiset<std::int64_t> ids;
+    for (const auto& b : batches) {
+        for (const auto& r : b) ids.insert(IdOf(r));
+    }
+    return ids;
+}
+
+void CutTo(const std::string& path, std::int64_t bytes) {
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(bytes)), 0);
+}
+
+/// A file cut between two syncs (here 30 bytes into the 10th record from its end):
+/// the next sync appends the cut records again, its own and those it had read,
+/// says so once, and counts them. Before the fix it stopped appending instead.
+TEST(SharedAmbientFile, RecordsCutByAnotherProgramAreAppendedAgain) {
+    TempDir dir;
+    const std::string path = dir.File("cut.amb");
+    Warnings wa;
+    SharedAmbientFile a(path, Params(), wa.Sink());
+    (void)a.LoadAll();
+    const auto a1 = Batch(1, 0, 8), b1 = Batch(2, 0, 6), a2 = Batch(1, 8, 1);
+    (void)a.Sync(a1);
+    {
+        SharedAmbientFile b(path, Params(), {});
+        (void)b.LoadAll();
+        (void)b.Sync(b1);
+    }
+    EXPECT_EQ(a.Sync({}).size(), b1.size());  // a has read b's records
+    const std::int64_t full = SizeOf(path);
+    CutTo(path, full - 10 * static_cast<std::int64_t>(kRecordBytes) + 30);
+    (void)a.Sync(a2);
+    const auto ids = IdsInFile(path);
+    EXPECT_EQ(std::multiset<std::int64_t>(ids.begin(), ids.end()), IdsOf({a1, b1, a2}));
+    EXPECT_EQ(a.RestoredRecords(), 10u);
+    EXPECT_FALSE(a.AppendsDisabled());
+    ASSERT_EQ(wa.messages.size(), 2u);  // the partial record, then the put-back
+    EXPECT_NE(wa.messages[0].find("removed partial ambient record"), std::string::npos);
+    EXPECT_NE(wa.messages[1].find("10 ambient values already saved were removed"),
+              std::string::npos)
+        << wa.messages[1];
+    // A second cut is put back too, and only counted.
+    CutTo(path, SizeOf(path) - 3 * static_cast<std::int64_t>(kRecordBytes));
+    (void)a.Sync({});
+    EXPECT_EQ(a.RestoredRecords(), 13u);
+    EXPECT_EQ(wa.messages.size(), 2u);
+    EXPECT_EQ(IdsInFile(path).size(), a1.size() + b1.size() + a2.size());
+}
+
+/// Radiance's fault: a start-up read without the lock sees our append half
+/// done, cuts the "torn" tail and appends its own records over ours, so the
+/// file does not even shrink. Both processes that knew the cut records notice;
+/// the records come back exactly once, and nobody is handed them as new.
+TEST(SharedAmbientFile, RecordsWrittenOverAfterACutComeBackOnce) {
+    TempDir dir;
+    const std::string path = dir.File("overwritten.amb");
+    SharedAmbientFile a(path, Params(), {});
+    SharedAmbientFile b(path, Params(), {});
+    (void)a.LoadAll();
+    (void)b.LoadAll();
+    const auto a1 = Batch(1, 0, 5), b1 = Batch(2, 0, 5), c1 = Batch(3, 0, 12);
+    (void)a.Sync(a1);
+    (void)b.Sync(b1);       // b read a1
+    (void)a.Sync({});       // a read b1
+    const std::int64_t cut = SizeOf(path) - 7 * static_cast<std::int64_t>(kRecordBytes);
+    CutTo(path, cut);       // 2 of a1 and all of b1 gone...
+    {
+        SharedAmbientFile c(path, Params(), {});  // ...and written over
+        (void)c.LoadAll();
+        (void)c.Sync(c1);
+    }
+    ASSERT_GT(SizeOf(path), cut + 7 * static_cast<std::int64_t>(kRecordBytes));
+    EXPECT_EQ(a.Sync({}).size(), c1.size());  // c's records are new to a
+    EXPECT_EQ(a.RestoredRecords(), 7u);
+    const auto fromB = b.Sync({});
+    EXPECT_EQ(fromB.size(), c1.size());  // a's put-back copies are not news to b
+    EXPECT_EQ(b.RestoredRecords(), 0u);  // a already put them back
+    const auto ids = IdsInFile(path);
+    EXPECT_EQ(std::multiset<std::int64_t>(ids.begin(), ids.end()), IdsOf({a1, b1, c1}));
+}
+
+/// A file emptied to zero bytes gets its header and every known record back;
+/// one cut inside its header is left alone, as before.
+TEST(SharedAmbientFile, EmptiedFileIsRebuiltButACutHeaderIsLeftAlone) {
+    TempDir dir;
+    const std::string path = dir.File("emptied.amb");
+    SharedAmbientFile a(path, Params(), {});
+    (void)a.LoadAll();
+    const auto a1 = Batch(1, 0, 4);
+    (void)a.Sync(a1);
+    const auto header = ReadBytes(path);
+    CutTo(path, 0);
+    (void)a.Sync({});
+    EXPECT_EQ(IdsInFile(path).size(), a1.size());
+    EXPECT_EQ(a.RestoredRecords(), a1.size());
+    EXPECT_EQ(ReadBytes(path), header);
+
+    Warnings w;
+    SharedAmbientFile b(path, Params(), w.Sink());
+    (void)b.LoadAll();
+    CutTo(path, 10);
+    EXPECT_TRUE(b.Sync(Batch(2, 0, 1)).empty());
+    EXPECT_TRUE(b.AppendsDisabled());
+    EXPECT_EQ(SizeOf(path), 10);
+    ASSERT_EQ(w.messages.size(), 1u);
+    EXPECT_NE(w.messages[0].find("shrank below its"), std::string::npos) << w.messages[0];
+}
+
 TEST(SharedAmbientFile, NonAmbientFileIsRefusedAndLeftByteIdentical) {
     TempDir dir;
     const std::string path = dir.File("notes.txt");
@@ -530,6 +661,70 @@ TEST(SharedAmbientFile, WaitsForARadianceStyleClassicLock) {
     EXPECT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0);
     close(ready[0]);
     close(ready[1]);
+}
+
+/// A child holding Radiance's classic write lock for 300 ms, as during an append.
+class ClassicLockHolder {
+public:
+    explicit ClassicLockHolder(const std::string& path) {
+        if (pipe(ready_) != 0) std::abort();
+        pid_ = fork();
+        if (pid_ == 0) {
+            const int fd = open(path.c_str(), O_RDWR);
+            struct flock fl {};
+            fl.l_type = F_WRLCK;
+            fl.l_whence = SEEK_SET;
+            if (fd < 0 || fcntl(fd, F_SETLKW, &fl) != 0) _exit(1);
+            const char c = 'x';
+            if (write(ready_[1], &c, 1) != 1) _exit(2);
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            _exit(0);
+        }
+        char c;
+        if (read(ready_[0], &c, 1) != 1) std::abort();
+    }
+    ~ClassicLockHolder() {
+        int st = 0;
+        waitpid(pid_, &st, 0);
+        close(ready_[0]);
+        close(ready_[1]);
+    }
+    ClassicLockHolder(const ClassicLockHolder&) = delete;
+    ClassicLockHolder& operator=(const ClassicLockHolder&) = delete;
+
+private:
+    pid_t pid_ = -1;
+    int ready_[2] = {-1, -1};
+};
+
+/// Issue 18: Radiance loads the file at start-up without its lock and can cut
+/// records another process is appending. lazyrad's start-up (open, header,
+/// first load) waits for a writer's lock, writable or read-only.
+TEST(SharedAmbientFile, StartUpReadsWaitForTheWritersLock) {
+    TempDir dir;
+    const std::string path = dir.File("startup.amb");
+    {
+        SharedAmbientFile create(path, Params(), {});
+        (void)create.Sync(Batch(1, 0, 3));
+    }
+    for (const bool readOnly : {false, true}) {
+        ASSERT_EQ(chmod(path.c_str(), readOnly ? 0444 : 0644), 0);
+        if (readOnly && geteuid() == 0) continue;  // root writes anyway
+        {
+            SharedAmbientFile f(path, Params(), {});
+            const ClassicLockHolder holder(path);
+            const auto start = std::chrono::steady_clock::now();
+            EXPECT_EQ(f.LoadAll().size(), 3u);
+            EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(200))
+                << "LoadAll, read-only " << readOnly;
+        }
+        const ClassicLockHolder holder(path);
+        const auto start = std::chrono::steady_clock::now();
+        SharedAmbientFile f(path, Params(), {});
+        EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(200))
+            << "open, read-only " << readOnly;
+    }
+    ASSERT_EQ(chmod(path.c_str(), 0644), 0);
 }
 
 TEST(SharedAmbientFile, EightProcessesAppendConcurrently) {

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "ambient/options.h"
 #include "core/conventions.h"
 #include "tests/ambient/hemisphere_test_scenes.h"
 
@@ -507,6 +508,36 @@ TEST(Hemisphere, SuperSamplingNeedsEnoughSamplesAndRows) {
     h = SampleHemisphere(kTiltedNormal, Options(1, 512, 1, false), rng, trace);
     EXPECT_EQ(h.rows, 1);
     EXPECT_EQ(h.raysTraced, h.columns);
+}
+
+/// Issue 18: -ad 2147483647 asked for 16384 × 51472 divisions (40 GB) and
+/// ended in std::bad_alloc. Divisions stop at kMaxAmbientDivisions whatever
+/// -ad·weight is, and the largest -ad the front end accepts reaches it.
+TEST(Hemisphere, DivisionsAreCappedForHugeDivisionCounts) {
+    for (const int divisions : {kMaxAmbientDivisions, kMaxAmbientDivisions + 1, 500000000,
+                                std::numeric_limits<int>::max()}) {
+        const DivisionCounts c = HemisphereDivisions(Options(divisions, 0));
+        EXPECT_LE(static_cast<long long>(c.rows) * c.columns, kMaxAmbientDivisions) << divisions;
+        EXPECT_EQ(c.rows, 1155) << divisions;
+    }
+    EXPECT_EQ(HemisphereDivisions(Options(kMaxAmbientDivisions, 0, 0.5)).rows, 817);
+}
+
+/// Issue 18: -as 1e7 took 10 s per ray. Extra samples stop at one per
+/// division on average (nt·np), a deliberate difference from Radiance.
+TEST(Hemisphere, SuperSamplesAreCappedAtTheDivisionCount) {
+    const auto trace = CapEnvironment(kTiltedNormal, 0.5, 1.0);
+    for (const int superSamples : {2000, 10000000, std::numeric_limits<int>::max()}) {
+        Rng rng(5);
+        const Hemisphere h = SampleHemisphere(kTiltedNormal, Options(1024, superSamples), rng,
+                                              trace);
+        ASSERT_TRUE(h.complete);
+        EXPECT_EQ(h.raysTraced, 2 * h.rows * h.columns) << superSamples;
+    }
+    // Below the cap the count is -as·weight, as before.
+    Rng rng(5);
+    const Hemisphere h = SampleHemisphere(kTiltedNormal, Options(1024, 512), rng, trace);
+    EXPECT_EQ(h.raysTraced, h.rows * h.columns + 512);
 }
 
 TEST(Hemisphere, NoSampleAtAllIsFlagged) {

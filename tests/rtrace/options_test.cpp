@@ -251,6 +251,19 @@ TEST(RtraceOptionsParse, IrradianceModes) {
     EXPECT_EQ(ParseOptions({"-i", "-I", "-I"}).shading.irradiance, IrradianceMode::AtHit);
 }
 
+/// Issue 18: -ad 2147483647 ended in "internal - std::bad_alloc"; -ad above
+/// the division limit is a one-line error naming the option and the limit.
+TEST(RtraceOptionsParse, DivisionsAboveTheLimitAreAnError) {
+    EXPECT_EQ(ParseOptions({"-ad", std::to_string(kMaxAmbientDivisions)}).ambient.divisions,
+              kMaxAmbientDivisions);
+    EXPECT_EQ(ErrorOf({"-ad", "2147483647", "s.rad"}),
+              "-ad 2147483647 is above the limit of 4194304 hemisphere divisions");
+    EXPECT_EQ(ErrorOf({"-ad", "500000000", "s.rad"}),
+              "-ad 500000000 is above the limit of 4194304 hemisphere divisions");
+    // -as has no limit of its own: each hemisphere clamps it to its divisions.
+    EXPECT_EQ(ParseOptions({"-as", "2147483647"}).ambient.superSamples, 2147483647);
+}
+
 TEST(RtraceOptionsParse, RejectsBadValuesAndUnknownOptions) {
     EXPECT_EQ(ErrorOf({"-ab2", "s.rad"}), "command line error at '-ab2'");
     EXPECT_EQ(ErrorOf({"-ab", "2.5", "s.rad"}), "command line error at '-ab'");
