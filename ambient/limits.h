@@ -4,6 +4,8 @@
 // radiance-notes.md §4.2), and the one absolute length of the lookup.
 #pragma once
 
+#include "core/conventions.h"
+
 namespace rt {
 
 struct AmbientLimits {
@@ -22,7 +24,6 @@ struct AmbientLimits {
     /// and up) shrinks Radiance's absolute lengths with smaller scenes.
     static AmbientLimits FromResolution(int resolution, double cubeSize,
                                         double toleranceScale = 1.0) {
-        constexpr double kFtinyLocal = 1e-6;
         AmbientLimits l;
         if (resolution > 0) {
             l.minRadius = cubeSize / resolution;
@@ -32,7 +33,7 @@ struct AmbientLimits {
             l.minRadius = 0;
             l.maxRadius = 0.2 * cubeSize;
         }
-        const double tiny = kFtinyLocal * toleranceScale;
+        const double tiny = kFtiny * toleranceScale;
         if (l.minRadius <= tiny) l.minRadius = 10.0 * tiny;
         if (l.maxRadius <= l.minRadius) l.maxRadius = 64.0 * l.minRadius;
         l.behindMargin = 0.001 * toleranceScale;

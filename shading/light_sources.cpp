@@ -6,6 +6,7 @@
 
 #include "core/conventions.h"
 #include "core/error.h"
+#include "raycore/shapes.h"
 
 namespace rt {
 namespace {
@@ -39,25 +40,6 @@ void SetFlatSize(LightSource& src, bool randomFrames, Rng& rng) {
     src.size[0] = PerpendicularTo(src.normal, randomFrames, rng) * (0.5 * std::sqrt(src.area));
     src.size[1] = Cross(src.normal, src.size[0]);
     src.size[2] = Vec3();
-}
-
-/// Crossing-number test for a point in the polygon's plane (edges inside).
-bool PointInPolygon(const Polygon& poly, const Vec3& p) {
-    // Project by dropping the largest normal component.
-    Vec3 an = Abs(poly.normal);
-    int drop = an.x > an.y ? (an.x > an.z ? 0 : 2) : (an.y > an.z ? 1 : 2);
-    int ax = drop == 0 ? 1 : 0, ay = drop == 2 ? 1 : 2;
-    bool inside = false;
-    size_t n = poly.vertices.size();
-    for (size_t i = 0, j = n - 1; i < n; j = i++) {
-        const Vec3& a = poly.vertices[i];
-        const Vec3& b = poly.vertices[j];
-        if ((a[ay] > p[ay]) != (b[ay] > p[ay])) {
-            double x = a[ax] + (p[ay] - a[ay]) * (b[ax] - a[ax]) / (b[ay] - a[ay]);
-            if (p[ax] < x) inside = !inside;
-        }
-    }
-    return inside;
 }
 
 [[noreturn]] void SourceError(const Surface& s, const std::string& what) {
