@@ -133,6 +133,25 @@ TEST(Octree, DamageIsNamedWithItsOffset) {
     EXPECT_GT(o.objectCount, 0);
 }
 
+TEST(Octree, OctreeMustBeTheOnlySceneArgument) {
+    try {
+        LoadScene({kData + "cornell_frozen.oct", kData + "lamp.rad"}, SceneLoadOptions{}, nullptr);
+        FAIL() << "loaded an octree with another scene file";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "an octree (\"" + kData +
+                                             "cornell_frozen.oct\") must be the only scene argument");
+        EXPECT_EQ(e.ExitCode(), 1);
+    }
+    // A !command argument must print an octree.
+    try {
+        LoadScene({"!echo void plastic p 0 0 5 1 1 1 0 0"}, SceneLoadOptions{}, nullptr);
+        FAIL() << "took a command's scene text as an octree";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "the output of \"!echo void plastic p 0 0 5 1 1 1 0 0\" is not an octree");
+    }
+}
+
 TEST(Octree, StaleObjectCount) {
     OctreeFile o = Read(Bytes("cornell.oct"));
     std::vector<SceneObject> objects(static_cast<std::size_t>(o.objectCount) + 1);
