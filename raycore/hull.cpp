@@ -13,7 +13,15 @@ namespace {
 /// Points whose inner side decides for every surface: polygon vertices, and
 /// the eight corners of the bounding box of any other shape (the box holds
 /// the shape, so if its corners are inside, so is the shape). Distant sources
-/// are not geometry.
+/// are not geometry; instances count by their placed cubes.
+void AddCorners(std::vector<Vec3>& points, const Bounds3& b) {
+    if (b.Empty()) return;
+    for (int corner = 0; corner < 8; ++corner) {
+        points.push_back({corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
+                          corner & 4 ? b.hi.z : b.lo.z});
+    }
+}
+
 std::vector<Vec3> ExtremePoints(const Scene& scene) {
     std::vector<Vec3> points;
     for (const Surface& surface : scene.surfaces) {
@@ -22,12 +30,10 @@ std::vector<Vec3> ExtremePoints(const Scene& scene) {
             points.insert(points.end(), polygon->vertices.begin(), polygon->vertices.end());
             continue;
         }
-        const Bounds3 b = ShapeBounds(surface);
-        for (int corner = 0; corner < 8; ++corner) {
-            points.push_back({corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
-                              corner & 4 ? b.hi.z : b.lo.z});
-        }
+        AddCorners(points, ShapeBounds(surface));
     }
+    // An instance lies within its placed cube.
+    for (const Instance& instance : scene.instances) AddCorners(points, InstanceBounds(scene, instance));
     return points;
 }
 

@@ -69,12 +69,18 @@ struct Priority {
     bool transparent = false;  // istransp() of the material
 };
 
-/// Plane of the polygon a quad primitive came from (exact t for the filter).
+/// Plane of the polygon a quad primitive came from, or of a mesh triangle
+/// (exact t for the filter), in the coordinates of the Embree scene's surfaces.
 struct PolygonPlane {
     Vec3 normal;
     double offset = 0;
     int surface = -1;
 };
+
+/// Geometry IDs in the scenes that hold instances: the scene's own kinds
+/// first, then one instance geometry per Scene::instances entry.
+constexpr unsigned kPolygonGeometry = 0, kSphereGeometry = 1, kConeGeometry = 2,
+                   kRingGeometry = 3, kMeshGeometry = 4, kFirstInstanceGeometry = 5;
 
 float RoundDown(double x) {
     float f = static_cast<float>(x);
@@ -202,10 +208,21 @@ std::vector<std::array<int, 4>> PairTriangles(const std::vector<std::array<int, 
 
 struct RayCore::Impl {
     /// Per-kind user geometry: primID -> surface, and float bounds relative
-    /// to the scene centre, precomputed so the bounds callback only copies.
+    /// to the Embree scene's centre, precomputed so the bounds callback only copies.
     struct UserKind {
+        const std::vector<Surface>* surfaceList = nullptr;  // what `surfaces` index
         std::vector<int> surfaces;
         std::vector<RTCBounds> bounds;
+    };
+
+    /// A ray in the coordinates of the surfaces it is tested against: the
+    /// caller's world ray, or that ray mapped into an instance's object space
+    /// (unit direction; object distances times `scale` are world distances).
+    struct ExactRay {
+        Vec3 org, dir;
+        double tmin = 0;   // tolerance in these units
+        double tmax = kInf;
+        double scale = 1;  // world length of one unit here
     };
 
     /// Our RTCIntersectContext extension; see the file comment. Lives on the
@@ -217,34 +234,73 @@ struct RayCore::Impl {
         double tmax;    // exclusive upper bound on exact t (kInf: none)
         double shift;   // the float ray starts this far behind org
         double slack;   // allowance for Embree's float error in t
-        // Best candidate so far (Intersect only).
+        // Best candidate so far (Intersect only); the normal in the
+        // coordinates of its instance.
         double bestT = kInf;
         int best = -1;
+        int bestInstance = -1;
+        int bestTriangle = -1;
         Vec3 bestNormal;
+        // The ray in the object space of the instance last asked for: callbacks
+        // for one instance come in runs, so it is mapped once per run.
+        mutable int mappedInstance = -1;
+        mutable ExactRay mapped;
+
+        /// The exact ray in the space of the surfaces under Embree instance
+        /// `instID` (RTC_INVALID_GEOMETRY_ID: the world).
+        const ExactRay& RayIn(unsigned instID) const {
+            if (instID == RTC_INVALID_GEOMETRY_ID) {
+                if (mappedInstance != -1) {
+                    mapped = ExactRay{org, dir, impl->tolerance, tmax, 1.0};
+                    mappedInstance = -1;
+                }
+                return mapped;
+            }
+            const int instance = static_cast<int>(instID - kFirstInstanceGeometry);
+            if (instance != mappedInstance) {
+                const InstanceData& in = impl->instances[static_cast<size_t>(instance)];
+                mapped.org = in.objectFromRender.Point(org);
+                mapped.dir = in.objectFromRender.Vector(dir) * in.scale;
+                mapped.tmin = impl->tolerance / in.scale;
+                mapped.tmax = tmax / in.scale;
+                mapped.scale = in.scale;
+                mappedInstance = instance;
+            }
+            return mapped;
+        }
+        int InstanceOf(unsigned instID) const {
+            return instID == RTC_INVALID_GEOMETRY_ID ? -1
+                                                     : static_cast<int>(instID - kFirstInstanceGeometry);
+        }
 
         /// Radiance's rule for a new candidate: nearer by more than the
         /// tolerance wins; within it, material beats void, opaque beats transparent,
         /// the larger material index wins, and a tie goes to the nearer surface,
-        /// then the lower surface index (where Radiance keeps "the first
+        /// then the lower (instance, surface) (where Radiance keeps "the first
         /// found"). Nearer first: a ray that took the farther of two walls
         /// 1e-7 apart would start its reflections behind the nearer one and
         /// hit its back at grazing angles (acne).
-        bool Offer(double t, int surface, const Vec3& normal) {
+        bool Offer(double t, int instance, int surface, int triangle, const Vec3& normal) {
             bool take;
             const double tolerance = impl->tolerance;
             if (best < 0 || t < bestT - tolerance) {
                 take = true;
             } else if (t > bestT + tolerance) {
                 take = false;
-            } else if (surface == best) {
+            } else if (surface == best && instance == bestInstance) {
                 take = t < bestT;
             } else {
-                const int order = impl->Compare(surface, best);
-                take = order != 0 ? order > 0 : (t != bestT ? t < bestT : surface < best);
+                const int order = impl->Compare(instance, surface, bestInstance, best);
+                take = order != 0 ? order > 0
+                                  : (t != bestT ? t < bestT
+                                                : std::pair(instance, surface) <
+                                                      std::pair(bestInstance, best));
             }
             if (take) {
                 bestT = t;
                 best = surface;
+                bestInstance = instance;
+                bestTriangle = triangle;
                 bestNormal = normal;
             }
             return take;
@@ -256,6 +312,19 @@ struct RayCore::Impl {
     };
     static_assert(std::is_standard_layout_v<Query>, "Query must extend RTCIntersectContext");
 
+    /// The surfaces of one coordinate space as Embree geometry: the scene's
+    /// own (world), or a prototype's (object space).
+    struct Geometry {
+        const std::vector<Surface>* surfaces = nullptr;
+        Vec3 centre;  // Embree coordinates are relative to this point
+        /// Size of the coordinates in this space that Embree's float error
+        /// scales with (user-geometry padding).
+        double coordinateScale = 1;
+        UserKind spheres, cones, rings;
+        const TriangleMesh* mesh = nullptr;
+        std::vector<PolygonPlane> meshPlanes;  // per triangle
+    };
+
     /// One Embree scene over some of the surfaces.
     struct Layer {
         RTCScene rtc = nullptr;
@@ -266,6 +335,19 @@ struct RayCore::Impl {
         Bounds3 bounds;
     };
 
+    struct PrototypeData {
+        Geometry geometry;
+        Layer layer;
+        std::vector<Priority> priority;  // per prototype surface
+    };
+
+    struct InstanceData {
+        Transform objectFromRender, renderFromObject;
+        double scale = 1;  // positive uniform scale of renderFromObject
+        int prototype = -1;
+        std::optional<Priority> override;
+    };
+
     const Scene* scene = nullptr;
     Vec3 centre;                           // Embree coordinates are relative to this point
     double extent = 1;                     // size of the geometry around the centre (scene units)
@@ -274,7 +356,9 @@ struct RayCore::Impl {
     double coordinateScale = 1;
     double tolerance = kFtiny;             // Scene::distanceTolerance
     std::vector<Priority> priority;        // per surface
-    UserKind spheres, cones, rings;
+    Geometry world;
+    std::vector<PrototypeData> prototypes;
+    std::vector<InstanceData> instances;
 
     EmbreeErrors errors;
     RTCDevice device = nullptr;
@@ -296,6 +380,9 @@ struct RayCore::Impl {
         if (besideSources.rtc) rtcReleaseScene(besideSources.rtc);
         if (interior.rtc) rtcReleaseScene(interior.rtc);
         if (all.rtc) rtcReleaseScene(all.rtc);
+        for (PrototypeData& p : prototypes) {
+            if (p.layer.rtc) rtcReleaseScene(p.layer.rtc);
+        }
         if (device) rtcReleaseDevice(device);
     }
 
@@ -305,11 +392,18 @@ struct RayCore::Impl {
         if (errors.code != RTC_ERROR_NONE) ThrowEmbreeError(errors.code, errors.message, call);
     }
 
-    /// +1 if `candidate`'s material outranks `incumbent`'s in Radiance's
+    const Priority& PriorityOf(int instance, int surface) const {
+        if (instance < 0) return priority[static_cast<size_t>(surface)];
+        const InstanceData& in = instances[static_cast<size_t>(instance)];
+        if (in.override) return *in.override;
+        return prototypes[static_cast<size_t>(in.prototype)].priority[static_cast<size_t>(surface)];
+    }
+
+    /// +1 if the candidate's material outranks the incumbent's in Radiance's
     /// coincidence rule, -1 if it ranks below, 0 if they rank the same.
-    int Compare(int candidate, int incumbent) const {
-        const Priority& c = priority[static_cast<size_t>(candidate)];
-        const Priority& b = priority[static_cast<size_t>(incumbent)];
+    int Compare(int candidateInstance, int candidate, int incumbentInstance, int incumbent) const {
+        const Priority& c = PriorityOf(candidateInstance, candidate);
+        const Priority& b = PriorityOf(incumbentInstance, incumbent);
         const bool cVoid = c.material < 0, bVoid = b.material < 0;
         if (cVoid != bVoid) return cVoid ? -1 : 1;
         if (c.transparent != b.transparent) return c.transparent ? -1 : 1;
@@ -317,13 +411,33 @@ struct RayCore::Impl {
         return 0;
     }
 
+    Priority PriorityOfSurface(const Surface& surface) const {
+        Priority p;
+        p.material = surface.material;
+        if (p.material >= 0) {
+            RT_CHECK(static_cast<size_t>(p.material) < scene->materials.size());
+            p.transparent = IsTransparentType(scene->materials[static_cast<size_t>(p.material)].type);
+        }
+        return p;
+    }
+
     void Build(const Scene& s);
-    void BuildLayer(Layer& layer, const std::vector<bool>& leftOut);
-    void BuildPolygons(Layer& layer, const std::vector<bool>& leftOut);
+    /// Sorts a space's surfaces into the user kinds and sets up its mesh planes.
+    void Classify(Geometry& geometry, const std::vector<Surface>& surfaces,
+                  const TriangleMesh* mesh);
+    void BuildPrototype(PrototypeData& data, const Prototype& prototype);
+    /// An Embree scene over `geometry`'s surfaces except `leftOut`, and, for
+    /// the world, every instance.
+    void BuildLayer(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut,
+                    bool withInstances);
+    void BuildPolygons(Layer& layer, const Geometry& geometry, const std::vector<bool>& leftOut);
+    void BuildMesh(Layer& layer, Geometry& geometry);
+    void BuildInstances(Layer& layer);
     /// Float boxes of user-geometry surfaces, relative to the centre.
-    std::vector<RTCBounds> UserBoundsOf(const std::vector<int>& surfaces) const;
-    void BuildUserKind(UserKind& kind, Layer& layer, RTCIntersectFunctionN intersect,
-                       RTCOccludedFunctionN occluded);
+    std::vector<RTCBounds> UserBoundsOf(const Geometry& geometry, const std::vector<int>& surfaces) const;
+    void BuildUserKind(UserKind& kind, const Geometry& geometry, Layer& layer, unsigned id,
+                       RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded);
+    void AttachGeometry(Layer& layer, RTCGeometry geometry, unsigned id);
     // Both run once per query: inlined into Intersect and Occluded, which
     // share their work on the origin (they were ~6 % of a cornell run as calls).
     [[gnu::always_inline]] inline Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax,
@@ -335,33 +449,37 @@ struct RayCore::Impl {
                                                                         const Vec3& dir) const;
     /// DistanceToScene for an origin far from the scene.
     std::optional<double> DistanceFromAfar(const Vec3& org, const Vec3& dir) const;
+    /// Shading normal and (u, v) of a hit on a mesh triangle.
+    void SetMeshAttributes(Hit& hit) const;
 
     static void PolygonIntersectFilter(const RTCFilterFunctionNArguments* args);
     static void PolygonOccludedFilter(const RTCFilterFunctionNArguments* args);
+    static void MeshIntersectFilter(const RTCFilterFunctionNArguments* args);
     static void UserBounds(const RTCBoundsFunctionArguments* args);
     template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserIntersect(const RTCIntersectFunctionNArguments* args);
     template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
 
-    /// Whether polygon plane p is a valid candidate: exact t = num/denom in
-    /// (tolerance, tmax). Compared without dividing, because a division's
-    /// latency stalls Embree's traversal in every filter call, and most
-    /// calls reject (the surface the ray starts on).
-    static bool PlaneCandidate(const Query& q, const PolygonPlane& p, double& num, double& denom) {
-        denom = Dot(p.normal, q.dir);
+    /// Whether polygon plane p is a valid candidate for ray r: exact t =
+    /// num/denom in (r.tmin, r.tmax). Compared without dividing, because a
+    /// division's latency stalls Embree's traversal in every filter call, and
+    /// most calls reject (the surface the ray starts on).
+    static bool PlaneCandidate(const ExactRay& r, const PolygonPlane& p, double& num,
+                               double& denom) {
+        denom = Dot(p.normal, r.dir);
         if (std::fabs(denom) <= kFtiny) return false;  // parallel, as o_face.c
-        num = p.offset - Dot(p.normal, q.org);
-        const double tolerance = q.impl->tolerance;
+        num = p.offset - Dot(p.normal, r.org);
         // tmax = kInf: inf·denom keeps the sign, so the far test passes.
-        return denom > 0 ? num > tolerance * denom && num < q.tmax * denom
-                         : num < tolerance * denom && num > q.tmax * denom;
+        return denom > 0 ? num > r.tmin * denom && num < r.tmax * denom
+                         : num < r.tmin * denom && num > r.tmax * denom;
     }
 };
 
 // ---------------------------------------------------------------------------
 // Callbacks. Only rtcIntersect1/rtcOccluded1 are used, so every callback sees
-// N == 1 and the ray/hit pointers are plain RTCRay/RTCHit/RTCRayHit.
+// N == 1 and the ray/hit pointers are plain RTCRay/RTCRayHit. The instance a
+// callback runs in is the context's instID[0] (invalid in the world).
 
 void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
@@ -369,10 +487,30 @@ void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* ar
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     const PolygonPlane& plane = quads[hit->primID];
+    const unsigned instID = args->context->instID[0];
+    const ExactRay& r = q.RayIn(instID);
     double num, denom;
-    if (!PlaneCandidate(q, plane, num, denom) ||
-        !q.Offer(num / denom, plane.surface, plane.normal)) {
+    if (!PlaneCandidate(r, plane, num, denom) ||
+        !q.Offer(num / denom * r.scale, q.InstanceOf(instID), plane.surface, -1, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
+        return;
+    }
+    reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
+}
+
+void RayCore::Impl::MeshIntersectFilter(const RTCFilterFunctionNArguments* args) {
+    RT_DCHECK(args->N == 1);
+    auto& q = *reinterpret_cast<Query*>(args->context);
+    const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto& planes = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
+    const PolygonPlane& plane = planes[hit->primID];
+    const unsigned instID = args->context->instID[0];
+    const ExactRay& r = q.RayIn(instID);
+    double num, denom;
+    if (!PlaneCandidate(r, plane, num, denom) ||
+        !q.Offer(num / denom * r.scale, q.InstanceOf(instID), plane.surface,
+                 static_cast<int>(hit->primID), plane.normal)) {
+        args->valid[0] = 0;
         return;
     }
     reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
@@ -384,7 +522,9 @@ void RayCore::Impl::PolygonOccludedFilter(const RTCFilterFunctionNArguments* arg
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     double num, denom;
-    if (!PlaneCandidate(q, quads[hit->primID], num, denom)) args->valid[0] = 0;
+    if (!PlaneCandidate(q.RayIn(args->context->instID[0]), quads[hit->primID], num, denom)) {
+        args->valid[0] = 0;
+    }
 }
 
 void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
@@ -399,10 +539,14 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
     auto& q = *reinterpret_cast<Query*>(args->context);
     const int surface = kind->surfaces[args->primID];
-    const auto& shape =
-        std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
-    const auto h = Fn(shape, q.org, q.dir, q.impl->tolerance);
-    if (!h || !(h->t < q.tmax) || !q.Offer(h->t, surface, h->normal)) return;
+    const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
+    const unsigned instID = args->context->instID[0];
+    const ExactRay& r = q.RayIn(instID);
+    const auto h = Fn(shape, r.org, r.dir, r.tmin);
+    if (!h || !(h->t < r.tmax) ||
+        !q.Offer(h->t * r.scale, q.InstanceOf(instID), surface, -1, h->normal)) {
+        return;
+    }
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
     rayhit->ray.tfar = q.FarBound();
     rayhit->hit.Ng_x = static_cast<float>(h->normal.x);
@@ -411,7 +555,7 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     rayhit->hit.u = rayhit->hit.v = 0;
     rayhit->hit.primID = args->primID;
     rayhit->hit.geomID = args->geomID;
-    rayhit->hit.instID[0] = args->context->instID[0];
+    rayhit->hit.instID[0] = instID;
 }
 
 template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
@@ -421,10 +565,10 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const int surface = kind->surfaces[args->primID];
-    const auto& shape =
-        std::get<Shape>(q.impl->scene->surfaces[static_cast<size_t>(surface)].shape);
-    const auto h = Fn(shape, q.org, q.dir, q.impl->tolerance);
-    if (h && h->t < q.tmax) {
+    const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
+    const ExactRay& r = q.RayIn(args->context->instID[0]);
+    const auto h = Fn(shape, r.org, r.dir, r.tmin);
+    if (h && h->t < r.tmax) {
         // Embree's convention for "occluded": tfar = -inf.
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }
@@ -433,6 +577,56 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
 // ---------------------------------------------------------------------------
 // Construction.
 
+void RayCore::Impl::Classify(Geometry& geometry, const std::vector<Surface>& surfaces,
+                             const TriangleMesh* mesh) {
+    geometry.surfaces = &surfaces;
+    geometry.spheres.surfaceList = geometry.cones.surfaceList = geometry.rings.surfaceList = &surfaces;
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        const Surface& surface = surfaces[i];
+        const int index = static_cast<int>(i);
+        switch (surface.type) {
+            case SurfaceType::Polygon:
+                break;  // BuildPolygons
+            case SurfaceType::Sphere:
+            case SurfaceType::Bubble:
+                RT_CHECK(std::get<Sphere>(surface.shape).inward ==
+                         (surface.type == SurfaceType::Bubble));
+                geometry.spheres.surfaces.push_back(index);
+                break;
+            case SurfaceType::Cone:
+            case SurfaceType::Cup:
+            case SurfaceType::Cylinder:
+            case SurfaceType::Tube:
+                RT_CHECK(std::get<Cone>(surface.shape).inward ==
+                         (surface.type == SurfaceType::Cup || surface.type == SurfaceType::Tube));
+                geometry.cones.surfaces.push_back(index);
+                break;
+            case SurfaceType::Ring:
+                geometry.rings.surfaces.push_back(index);
+                break;
+            case SurfaceType::Source:
+            case SurfaceType::Instance:
+            case SurfaceType::Mesh:
+                break;  // not geometry
+        }
+    }
+    geometry.mesh = mesh;
+    if (!mesh) return;
+    // Radiance's mesh normal (o_mesh.c): (V0 − V2) × (V1 − V0), so that
+    // counter-clockwise vertices face the viewer.
+    geometry.meshPlanes.reserve(mesh->triangles.size());
+    for (const TriangleMesh::Triangle& tri : mesh->triangles) {
+        const Vec3& a = mesh->vertices[static_cast<size_t>(tri.v[0])];
+        const Vec3& b = mesh->vertices[static_cast<size_t>(tri.v[1])];
+        const Vec3& c = mesh->vertices[static_cast<size_t>(tri.v[2])];
+        Vec3 n = Cross(a - c, b - a);
+        const double length = Length(n);
+        n = length > 0 ? n / length : Vec3{};
+        // A degenerate triangle gets a zero normal: PlaneCandidate finds it parallel.
+        geometry.meshPlanes.push_back({n, Dot(n, a), tri.surface});
+    }
+}
+
 void RayCore::Impl::Build(const Scene& s) {
     scene = &s;
     tolerance = s.distanceTolerance;
@@ -440,6 +634,7 @@ void RayCore::Impl::Build(const Scene& s) {
     // otherwise (hand-built scenes) the bounds of the surfaces.
     Bounds3 bounds;
     for (const Surface& surface : s.surfaces) bounds.Extend(ShapeBounds(surface));
+    for (const Instance& instance : s.instances) bounds.Extend(InstanceBounds(s, instance));
     if (s.cubeSize > 0) {
         centre = s.cubeOrigin + Vec3{1, 1, 1} * (s.cubeSize / 2);
         extent = s.cubeSize;
@@ -451,39 +646,10 @@ void RayCore::Impl::Build(const Scene& s) {
     coordinateScale = std::max(extent, MaxAbs(centre) + extent);
 
     priority.resize(s.surfaces.size());
-    for (size_t i = 0; i < s.surfaces.size(); ++i) {
-        const Surface& surface = s.surfaces[i];
-        Priority& p = priority[i];
-        p.material = surface.material;
-        if (p.material >= 0) {
-            RT_CHECK(static_cast<size_t>(p.material) < s.materials.size());
-            p.transparent = IsTransparentType(s.materials[static_cast<size_t>(p.material)].type);
-        }
-        const int index = static_cast<int>(i);
-        switch (surface.type) {
-            case SurfaceType::Polygon:
-                break;  // BuildPolygons
-            case SurfaceType::Sphere:
-            case SurfaceType::Bubble:
-                RT_CHECK(std::get<Sphere>(surface.shape).inward ==
-                         (surface.type == SurfaceType::Bubble));
-                spheres.surfaces.push_back(index);
-                break;
-            case SurfaceType::Cone:
-            case SurfaceType::Cup:
-            case SurfaceType::Cylinder:
-            case SurfaceType::Tube:
-                RT_CHECK(std::get<Cone>(surface.shape).inward ==
-                         (surface.type == SurfaceType::Cup || surface.type == SurfaceType::Tube));
-                cones.surfaces.push_back(index);
-                break;
-            case SurfaceType::Ring:
-                rings.surfaces.push_back(index);
-                break;
-            case SurfaceType::Source:
-                break;  // not geometry
-        }
-    }
+    for (size_t i = 0; i < s.surfaces.size(); ++i) priority[i] = PriorityOfSurface(s.surfaces[i]);
+    Classify(world, s.surfaces, nullptr);
+    world.centre = centre;
+    world.coordinateScale = coordinateScale;
 
     device = rtcNewDevice(nullptr);
     if (!device) ThrowEmbreeError(rtcGetDeviceError(nullptr), "", "rtcNewDevice");
@@ -495,7 +661,35 @@ void RayCore::Impl::Build(const Scene& s) {
         throw Error(Error::Kind::Internal,
                     "Embree build lacks filter functions or culls back faces");
     }
-    BuildLayer(all, std::vector<bool>(s.surfaces.size(), false));
+
+    instances.resize(s.instances.size());
+    // Embree's float error in an instance's object space is the world's,
+    // divided by the instance's scale: the smallest placement sets the padding.
+    std::vector<double> smallestScale(s.prototypes.size(), kInf);
+    for (size_t i = 0; i < s.instances.size(); ++i) {
+        const Instance& in = s.instances[i];
+        InstanceData& data = instances[i];
+        data.renderFromObject = in.renderFromObject;
+        data.objectFromRender = in.objectFromRender;
+        data.scale = std::fabs(in.renderFromObject.scale);
+        data.prototype = in.prototype;
+        if (in.override) data.override = PriorityOfSurface(*in.override);
+        double& smallest = smallestScale[static_cast<size_t>(in.prototype)];
+        smallest = std::min(smallest, data.scale);
+    }
+    prototypes.resize(s.prototypes.size());
+    for (size_t p = 0; p < s.prototypes.size(); ++p) {
+        const Prototype& prototype = s.prototypes[p];
+        PrototypeData& data = prototypes[p];
+        Geometry& g = data.geometry;
+        g.centre = prototype.cubeOrigin + Vec3{1, 1, 1} * (prototype.cubeSize / 2);
+        const double own = std::max(prototype.cubeSize, MaxAbs(g.centre) + prototype.cubeSize);
+        g.coordinateScale =
+            std::isfinite(smallestScale[p]) ? std::max(own, coordinateScale / smallestScale[p]) : own;
+        BuildPrototype(data, prototype);
+    }
+
+    BuildLayer(all, world, std::vector<bool>(s.surfaces.size(), false), true);
 
     const bool localSources =
         std::any_of(s.surfaces.begin(), s.surfaces.end(), [&](const Surface& f) {
@@ -509,15 +703,29 @@ void RayCore::Impl::Build(const Scene& s) {
     if (bounding.surfaces.empty()) return;
     std::vector<bool> leftOut(s.surfaces.size(), false);
     for (int i : bounding.surfaces) leftOut[static_cast<size_t>(i)] = true;
-    BuildLayer(interior, leftOut);
+    BuildLayer(interior, world, leftOut, true);
 
     sourcePlane = FindSourcePlane(s, leftOut, coordinateScale);
     if (!sourcePlane) return;
     for (int i : sourcePlane->surfaces) leftOut[static_cast<size_t>(i)] = true;
-    BuildLayer(besideSources, leftOut);
+    BuildLayer(besideSources, world, leftOut, true);
 }
 
-void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
+void RayCore::Impl::BuildPrototype(PrototypeData& data, const Prototype& prototype) {
+    data.priority.reserve(prototype.surfaces.size());
+    for (const Surface& surface : prototype.surfaces) data.priority.push_back(PriorityOfSurface(surface));
+    Classify(data.geometry, prototype.surfaces, prototype.mesh.get());
+    BuildLayer(data.layer, data.geometry, std::vector<bool>(prototype.surfaces.size(), false), false);
+}
+
+void RayCore::Impl::AttachGeometry(Layer& layer, RTCGeometry geometry, unsigned id) {
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(layer.rtc, geometry, id);
+    rtcReleaseGeometry(geometry);
+}
+
+void RayCore::Impl::BuildLayer(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut,
+                               bool withInstances) {
     layer.rtc = rtcNewScene(device);
     Check("rtcNewScene");
     // ROBUST: watertight triangle tests, so rays through shared edges and
@@ -531,37 +739,45 @@ void RayCore::Impl::BuildLayer(Layer& layer, const std::vector<bool>& leftOut) {
 
     // Embree's candidates lie within its float error of their surface, and
     // the exact tests accept them there.
-    const double pad = 2 * kFloatSlack * coordinateScale + tolerance;
-    for (size_t i = 0; i < scene->surfaces.size(); ++i) {
-        const Surface& surface = scene->surfaces[i];
-        if (leftOut[i] || surface.type == SurfaceType::Source) continue;
-        const Bounds3 b = ShapeBounds(surface);
-        layer.bounds.Extend(Bounds3{b.lo - Vec3{pad, pad, pad}, b.hi + Vec3{pad, pad, pad}});
+    const double pad = 2 * kFloatSlack * geometry.coordinateScale + tolerance;
+    const Vec3 padding{pad, pad, pad};
+    const auto& surfaces = *geometry.surfaces;
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        if (leftOut[i]) continue;
+        const Bounds3 b = ShapeBounds(surfaces[i]);
+        if (!b.Empty()) layer.bounds.Extend(Bounds3{b.lo - padding, b.hi + padding});
     }
-    BuildPolygons(layer, leftOut);
-    BuildUserKind(spheres, layer, &UserIntersect<Sphere, IntersectSphere>,
-                  &UserOccluded<Sphere, IntersectSphere>);
-    BuildUserKind(cones, layer, &UserIntersect<Cone, IntersectCone>,
-                  &UserOccluded<Cone, IntersectCone>);
-    BuildUserKind(rings, layer, &UserIntersect<Ring, IntersectRing>,
-                  &UserOccluded<Ring, IntersectRing>);
+    if (geometry.mesh) {
+        for (const Vec3& v : geometry.mesh->vertices) layer.bounds.Extend(Bounds3{v - padding, v + padding});
+    }
+    BuildPolygons(layer, geometry, leftOut);
+    BuildUserKind(geometry.spheres, geometry, layer, kSphereGeometry,
+                  &UserIntersect<Sphere, IntersectSphere>, &UserOccluded<Sphere, IntersectSphere>);
+    BuildUserKind(geometry.cones, geometry, layer, kConeGeometry,
+                  &UserIntersect<Cone, IntersectCone>, &UserOccluded<Cone, IntersectCone>);
+    BuildUserKind(geometry.rings, geometry, layer, kRingGeometry,
+                  &UserIntersect<Ring, IntersectRing>, &UserOccluded<Ring, IntersectRing>);
+    if (geometry.mesh) BuildMesh(layer, geometry);
+    if (withInstances) BuildInstances(layer);
 
     rtcCommitScene(layer.rtc);
     Check("rtcCommitScene");
 }
 
-void RayCore::Impl::BuildPolygons(Layer& layer, const std::vector<bool>& leftOut) {
+void RayCore::Impl::BuildPolygons(Layer& layer, const Geometry& geometry,
+                                  const std::vector<bool>& leftOut) {
     std::vector<float> vertices;
     std::vector<unsigned> indices;
-    for (size_t i = 0; i < scene->surfaces.size(); ++i) {
-        const Surface& surface = scene->surfaces[i];
+    const auto& surfaces = *geometry.surfaces;
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        const Surface& surface = surfaces[i];
         if (surface.type != SurfaceType::Polygon || leftOut[i]) continue;
         const auto& polygon = std::get<Polygon>(surface.shape);
         const auto base = static_cast<unsigned>(vertices.size() / 3);
         // Same double -> same float: polygons sharing a vertex share it
         // bit-exactly, which Embree's watertight test needs.
         for (const Vec3& v : polygon.vertices) {
-            const Vec3 r = v - centre;
+            const Vec3 r = v - geometry.centre;
             vertices.insert(vertices.end(), {static_cast<float>(r.x), static_cast<float>(r.y),
                                              static_cast<float>(r.z)});
         }
@@ -572,57 +788,128 @@ void RayCore::Impl::BuildPolygons(Layer& layer, const std::vector<bool>& leftOut
     }
     if (layer.quads.empty()) return;
 
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
     Check("rtcNewGeometry");
     // Embree pads buffers it allocates itself (it reads 16 bytes per vertex).
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
                                                            RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                                                            vertices.size() / 3));
     auto* ib = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
                                 4 * sizeof(unsigned), layer.quads.size()));
     if (!vb || !ib) {
-        rtcReleaseGeometry(geometry);
+        rtcReleaseGeometry(geom);
         Check("rtcSetNewGeometryBuffer");
         throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
     }
     std::copy(vertices.begin(), vertices.end(), vb);
     std::copy(indices.begin(), indices.end(), ib);
-    rtcSetGeometryUserData(geometry, &layer.quads);
-    rtcSetGeometryIntersectFilterFunction(geometry, &PolygonIntersectFilter);
-    rtcSetGeometryOccludedFilterFunction(geometry, &PolygonOccludedFilter);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(layer.rtc, geometry);
-    rtcReleaseGeometry(geometry);
+    rtcSetGeometryUserData(geom, &layer.quads);
+    rtcSetGeometryIntersectFilterFunction(geom, &PolygonIntersectFilter);
+    rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter);
+    AttachGeometry(layer, geom, kPolygonGeometry);
     Check("polygon mesh");
 }
 
-void RayCore::Impl::BuildUserKind(UserKind& kind, Layer& layer, RTCIntersectFunctionN intersect,
+void RayCore::Impl::BuildMesh(Layer& layer, Geometry& geometry) {
+    const TriangleMesh& mesh = *geometry.mesh;
+    if (mesh.triangles.empty()) return;
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    Check("rtcNewGeometry");
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                           RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                           mesh.vertices.size()));
+    auto* ib = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), mesh.triangles.size()));
+    if (!vb || !ib) {
+        rtcReleaseGeometry(geom);
+        Check("rtcSetNewGeometryBuffer");
+        throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
+    }
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const Vec3 r = mesh.vertices[i] - geometry.centre;
+        vb[3 * i] = static_cast<float>(r.x);
+        vb[3 * i + 1] = static_cast<float>(r.y);
+        vb[3 * i + 2] = static_cast<float>(r.z);
+    }
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        for (int k = 0; k < 3; ++k) ib[3 * i + k] = static_cast<unsigned>(mesh.triangles[i].v[k]);
+    }
+    rtcSetGeometryUserData(geom, &geometry.meshPlanes);
+    rtcSetGeometryIntersectFilterFunction(geom, &MeshIntersectFilter);
+    rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter);
+    AttachGeometry(layer, geom, kMeshGeometry);
+    Check("triangle mesh");
+}
+
+void RayCore::Impl::BuildInstances(Layer& layer) {
+    for (size_t i = 0; i < instances.size(); ++i) {
+        const InstanceData& in = instances[i];
+        PrototypeData& proto = prototypes[static_cast<size_t>(in.prototype)];
+        if (proto.layer.bounds.Empty()) continue;  // nothing to hit
+        // Embree's instance transform takes the prototype's Embree coordinates
+        // (relative to its centre) to the world's (relative to ours):
+        // x ↦ (x + c_p)·R + T − c, column-major 3×4.
+        const Transform& f = in.renderFromObject;
+        const Vec3 translation = f.Point(proto.geometry.centre) - centre;
+        float xfm[12];
+        for (int row = 0; row < 3; ++row) {
+            for (int k = 0; k < 3; ++k) xfm[3 * row + k] = static_cast<float>(f.m[row][k]);
+        }
+        xfm[9] = static_cast<float>(translation.x);
+        xfm[10] = static_cast<float>(translation.y);
+        xfm[11] = static_cast<float>(translation.z);
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+        Check("rtcNewGeometry");
+        rtcSetGeometryInstancedScene(geom, proto.layer.rtc);
+        rtcSetGeometryTimeStepCount(geom, 1);
+        rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        AttachGeometry(layer, geom, kFirstInstanceGeometry + static_cast<unsigned>(i));
+        // The layer's box (for SegmentMeetsBox) in world coordinates: the
+        // prototype's box placed, widened by the world's float error.
+        const Bounds3& b = proto.layer.bounds;
+        const double pad = 2 * kFloatSlack * coordinateScale;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 c{corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y,
+                         corner & 4 ? b.hi.z : b.lo.z};
+            const Vec3 w = f.Point(c);
+            layer.bounds.Extend(Bounds3{w - Vec3{pad, pad, pad}, w + Vec3{pad, pad, pad}});
+        }
+    }
+    Check("instances");
+}
+
+void RayCore::Impl::BuildUserKind(UserKind& kind, const Geometry& geometry, Layer& layer,
+                                  unsigned id, RTCIntersectFunctionN intersect,
                                   RTCOccludedFunctionN occluded) {
     if (kind.surfaces.empty()) return;
-    if (kind.bounds.empty()) kind.bounds = UserBoundsOf(kind.surfaces);
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    if (kind.bounds.empty()) kind.bounds = UserBoundsOf(geometry, kind.surfaces);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     Check("rtcNewGeometry");
-    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(kind.surfaces.size()));
-    rtcSetGeometryUserData(geometry, &kind);
-    rtcSetGeometryBoundsFunction(geometry, &UserBounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, intersect);
-    rtcSetGeometryOccludedFunction(geometry, occluded);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(layer.rtc, geometry);
-    rtcReleaseGeometry(geometry);
+    rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(kind.surfaces.size()));
+    rtcSetGeometryUserData(geom, &kind);
+    rtcSetGeometryBoundsFunction(geom, &UserBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geom, intersect);
+    rtcSetGeometryOccludedFunction(geom, occluded);
+    AttachGeometry(layer, geom, id);
     Check("user geometry");
 }
 
-std::vector<RTCBounds> RayCore::Impl::UserBoundsOf(const std::vector<int>& surfaces) const {
+std::vector<RTCBounds> RayCore::Impl::UserBoundsOf(const Geometry& geometry,
+                                                   const std::vector<int>& surfaces) const {
     std::vector<RTCBounds> bounds;
     bounds.reserve(surfaces.size());
     for (int surface : surfaces) {
-        const Bounds3 b = ShapeBounds(scene->surfaces[static_cast<size_t>(surface)]);
-        const Vec3 lo = b.lo - centre, hi = b.hi - centre;
+        const Bounds3 b = ShapeBounds((*geometry.surfaces)[static_cast<size_t>(surface)]);
+        const Vec3 lo = b.lo - geometry.centre, hi = b.hi - geometry.centre;
         // Padding covers the float ray's deviation from the exact ray, so a
         // grazing exact hit is still offered to the exact test.
-        const double pad = kFloatSlack * (std::max(MaxAbs(lo), MaxAbs(hi)) + MaxAbs(hi - lo));
+        // In a prototype the float ray comes from the world's through the
+        // instance transform, so its error follows the world's coordinates.
+        const double scaleTerm = &geometry == &world ? 0.0 : geometry.coordinateScale;
+        const double pad = kFloatSlack * (std::max({MaxAbs(lo), MaxAbs(hi), scaleTerm}) +
+                                          MaxAbs(hi - lo));
         RTCBounds rb;
         rb.lower_x = RoundDown(lo.x - pad);
         rb.lower_y = RoundDown(lo.y - pad);
@@ -647,6 +934,8 @@ RayCore::Impl::Query RayCore::Impl::MakeQuery(const Vec3& org, const Vec3& dir, 
     q.org = org;
     q.dir = dir;
     q.tmax = tmax > 0 ? tmax : kInf;
+    q.mapped = ExactRay{org, dir, tolerance, q.tmax, 1.0};
+    q.mappedInstance = -1;
     // Embree's float distances are off by a few ulps of the largest
     // coordinate in play. The float ray starts `shift` behind the origin so
     // that every exact t > tolerance has a float t > 0 (tnear = 0), and the
@@ -724,9 +1013,47 @@ std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double
     Hit hit;
     hit.t = q.bestT + *advance;
     hit.point = org + dir * q.bestT;
-    hit.normal = q.bestNormal;
     hit.surface = q.best;
+    hit.instance = q.bestInstance;
+    hit.triangle = q.bestTriangle;
+    if (q.bestInstance < 0) {
+        hit.normal = q.bestNormal;
+    } else {
+        const Impl::InstanceData& in = impl_->instances[static_cast<size_t>(q.bestInstance)];
+        hit.normal = Normalize(in.renderFromObject.Vector(q.bestNormal));
+    }
+    hit.shadingNormal = hit.normal;
+    if (hit.triangle >= 0) impl_->SetMeshAttributes(hit);
     return hit;
+}
+
+void RayCore::Impl::SetMeshAttributes(Hit& hit) const {
+    const InstanceData& in = instances[static_cast<size_t>(hit.instance)];
+    const TriangleMesh& mesh = *prototypes[static_cast<size_t>(in.prototype)].geometry.mesh;
+    const TriangleMesh::Triangle& tri = mesh.triangles[static_cast<size_t>(hit.triangle)];
+    const Vec3 p = in.objectFromRender.Point(hit.point);
+    std::array<Vec3, 3> v;
+    for (int k = 0; k < 3; ++k) v[k] = mesh.vertices[static_cast<size_t>(tri.v[k])];
+    const auto w = BarycentricWeights(v, p);
+    if (!w) return;  // degenerate: no interpolation (Radiance warns "bad triangle")
+    const auto vertex = [&](int k) { return static_cast<size_t>(tri.v[k]); };
+    if (!mesh.normals.empty()) {
+        Vec3 n;
+        bool every = true;
+        for (int k = 0; k < 3 && every; ++k) {
+            const Vec3& nk = mesh.normals[vertex(k)];
+            every = LengthSquared(nk) > 0;
+            n += nk * (*w)[k];
+        }
+        if (every && LengthSquared(n) > 0) hit.shadingNormal = Normalize(in.renderFromObject.Vector(n));
+    }
+    if (!mesh.uvs.empty() && mesh.hasUv[vertex(0)] && mesh.hasUv[vertex(1)] &&
+        mesh.hasUv[vertex(2)]) {
+        for (int k = 0; k < 3; ++k) {
+            hit.u += (*w)[k] * mesh.uvs[vertex(k)][0];
+            hit.v += (*w)[k] * mesh.uvs[vertex(k)][1];
+        }
+    }
 }
 
 std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const {
@@ -737,7 +1064,7 @@ std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const
     Hit hit;
     hit.t = h->t;
     hit.point = org + dir * h->t;
-    hit.normal = h->normal;
+    hit.normal = hit.shadingNormal = h->normal;
     hit.surface = surface;
     return hit;
 }

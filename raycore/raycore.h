@@ -3,7 +3,9 @@
 // Closest-hit and occlusion queries on a Scene, backed by Embree 3 (the only
 // module that includes Embree; its types never appear in this header).
 // Polygons become triangles, spheres/cones/cylinders/rings are Embree user
-// geometry with exact analytic intersection. Embree finds the candidate in
+// geometry with exact analytic intersection. Each instanced octree and mesh
+// file is one Embree scene, shared by all its instances through Embree
+// instancing; hits in it are recomputed in its own (object) space. Embree finds the candidate in
 // single precision; every reported hit is then recomputed in double precision
 // against the original ray, so hit points are accurate at any scale and far
 // from the origin. Distant sources are not geometry and are never reported.
@@ -26,7 +28,20 @@ struct Hit {
     Vec3 point;        // org + t·dir, computed in double
     Vec3 normal;       // unit geometric normal as the surface defines it (outward for a
                        // sphere, inward for a bubble, the polygon's normal, ...), not flipped
-    int surface = -1;  // index into Scene::surfaces
+    /// Unit normal to shade with: `normal`, except on a mesh triangle whose
+    /// three vertices have normals (their interpolation, radiance-functions.md §13.4).
+    Vec3 shadingNormal;
+    /// The hit surface: Scene::HitSurface(instance, surface) shades it.
+    int instance = -1;   // index into Scene::instances; -1 for the scene's own surfaces
+    int surface = -1;    // index into Scene::surfaces, or the instance prototype's surfaces
+    int triangle = -1;   // mesh triangle (index into the prototype's mesh), -1 otherwise
+    /// Mesh (u, v) interpolated at the hit when all three vertices have them; else 0.
+    double u = 0, v = 0;
+
+    /// Same surface (for tests such as "did the ray hit the floor again").
+    bool SameSurface(const Hit& other) const {
+        return instance == other.instance && surface == other.surface;
+    }
 };
 
 /// For test failure messages.
@@ -49,7 +64,7 @@ public:
     /// Thread-safe.
     std::optional<Hit> Intersect(const Vec3& org, const Vec3& dir, double tmax) const;
 
-    /// Intersection with one surface only (source rays aim at their source).
+    /// Intersection with one of Scene::surfaces only (source rays aim at their source).
     std::optional<Hit> IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const;
 
     /// True if anything lies in (tol, tmax) along the ray. Thread-safe.

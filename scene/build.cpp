@@ -6,14 +6,18 @@
 // oconv's bounding cube (oconv.c, bbox.c).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "core/conventions.h"
 #include "scene/loader.h"
 #include "scene/object_types.h"
+#include "scene/octree.h"
 #include "scene/reader.h"
 #include "scene/transform.h"
 #include "cal/search.h"
@@ -102,9 +106,45 @@ const PatternSpec* FindPatternSpec(const std::string& type) {
     return nullptr;
 }
 
+/// An `instance` or `mesh` primitive as written, in the space of the scene
+/// or of the instanced octree that holds it; flattened into Scene::instances
+/// when the scene is finished.
+struct Placement {
+    std::string name;
+    int prototype = -1;
+    Transform outerFromObject;       // to the space the primitive is written in
+    std::optional<Surface> override; // the primitive's own modifier, unless void
+    FileLoc loc;
+};
+
+/// Nested placements beyond this many in all are refused: flattening
+/// multiplies the counts of each level, and a few lines of scene can ask for
+/// more instances than memory holds.
+constexpr std::size_t kMaxInstances = 10'000'000;
+
+/// The first place on RAYPATH holding the regular file `name` (names that
+/// are absolute or start with '.' are used as given), as Radiance's getpath().
+std::optional<std::string> FindOnPath(const std::string& name, const cal::SearchPath& path) {
+    const auto regular = [](const std::string& p) {
+        std::error_code ec;
+        return std::filesystem::is_regular_file(p, ec);
+    };
+    if (name.empty()) return std::nullopt;
+    if (name[0] == '/' || name[0] == '.') {
+        if (regular(name)) return name;
+        return std::nullopt;
+    }
+    for (const std::string& dir : path.entries) {
+        const std::string candidate = dir.empty() ? name : dir + "/" + name;
+        if (regular(candidate)) return candidate;
+    }
+    return std::nullopt;
+}
+
 class SceneBuilder {
 public:
-    explicit SceneBuilder(const WarningSink& warn) : warn_(warn) {}
+    SceneBuilder(const WarningSink& warn, const SceneLoadOptions& options)
+        : warn_(warn), options_(options) {}
 
     void Add(const SceneObject& object) {
         if (object.type == "alias") {
@@ -119,6 +159,7 @@ public:
     }
 
     Scene Finish() {
+        for (const Placement& p : topPlacements_) Flatten(p, Transform{}, nullptr, std::nullopt);
         SetCube();
         if (functions_) scene_.functions = std::move(functions_);
         return std::move(scene_);
@@ -294,19 +335,10 @@ private:
         Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1, modifier});
     }
 
-    void AddSurface(const SceneObject& object) {
-        if (object.type == "instance" || object.type == "mesh") {
-            ThrowUserError(object.loc, "unsupported object type '" + object.type +
-                                           "' (octree instances and meshes are not supported)");
-        }
-        const int modifier = ResolveModifier(object);
-        if (!object.sargs.empty()) BadArgs(object);
-
-        Surface surface;
-        surface.name = object.name;
-        surface.modifierName = object.modifier;
-        // Patterns may sit between the surface and its material; a chain
-        // without a material leaves the surface as void.
+    /// Sets the surface's material and the patterns between it and the
+    /// material from the chain starting at definition `modifier`; a chain
+    /// without a material leaves the surface as void.
+    void SetModifiers(Surface& surface, int modifier) const {
         for (int d = modifier; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
             const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
             if (m.material >= 0) {
@@ -315,6 +347,20 @@ private:
             }
             surface.patterns.push_back(m.pattern);
         }
+    }
+
+    void AddSurface(const SceneObject& object) {
+        if (object.type == "instance" || object.type == "mesh") {
+            AddPlacement(object);
+            return;
+        }
+        const int modifier = ResolveModifier(object);
+        if (!object.sargs.empty()) BadArgs(object);
+
+        Surface surface;
+        surface.name = object.name;
+        surface.modifierName = object.modifier;
+        SetModifiers(surface, modifier);
         surface.loc = object.loc;
         bool keep = true;
         if (object.type == "polygon") {
@@ -334,7 +380,132 @@ private:
         if (!bounds.Empty() && (!IsFinite(bounds.lo) || !IsFinite(bounds.hi))) {
             Fail(object, "coordinates too large");
         }
-        scene_.surfaces.push_back(std::move(surface));
+        surfaces_->push_back(std::move(surface));
+    }
+
+    /// `mod instance id 1+ octree [xf] 0 0` and `mod mesh id 1+ file [xf] 0 0`
+    /// (radiance-functions.md §13.1, §13.4).
+    void AddPlacement(const SceneObject& object) {
+        if (object.sargs.empty() || !object.rargs.empty()) BadArgs(object);
+        const int modifier = ResolveModifier(object);
+        Placement placement;
+        placement.name = object.name;
+        placement.loc = object.loc;
+        if (object.sargs.size() > 1) {
+            const ParsedTransform xf = ParseTransformArgs(object.sargs, 1);
+            if (xf.next != object.sargs.size()) Fail(object, "bad transform");
+            placement.outerFromObject = xf.transform;
+            // Radiance keeps a mirror's uniform scale positive (§13.1).
+            placement.outerFromObject.scale = std::fabs(placement.outerFromObject.scale);
+        }
+        if (object.modifier != "void") {
+            Surface override;
+            override.name = object.name;
+            override.modifierName = object.modifier;
+            override.type = SurfaceType::Instance;
+            override.loc = object.loc;
+            SetModifiers(override, modifier);
+            placement.override = std::move(override);
+        }
+        placement.prototype = LoadPrototype(object);
+        placements_->push_back(std::move(placement));
+    }
+
+    /// The prototype for the file an instance or mesh names, read the first
+    /// time it is named (one copy per name as written, as Radiance).
+    int LoadPrototype(const SceneObject& object) {
+        const bool mesh = object.type == "mesh";
+        const std::string& file = object.sargs[0];
+        const std::string key = (mesh ? "mesh:" : "octree:") + file;
+        if (const auto it = prototypeIndex_.find(key); it != prototypeIndex_.end()) {
+            if (it->second < 0) {
+                Fail(object, "octree \"" + PrintableWord(file) + "\" includes itself");
+            }
+            return it->second;
+        }
+        if (!options_.readFiles) Fail(object, "files disabled");
+        const auto path = FindOnPath(file, searchPath_);
+        if (!path) {
+            ThrowSystemError(object.loc.ToString() + ": cannot find " +
+                             (mesh ? "mesh" : "octree") + " file \"" + PrintableWord(file) + "\"");
+        }
+        std::ifstream in(*path, std::ios::binary);
+        if (!in) ThrowSystemError(object.loc.ToString() + ": cannot open \"" + *path + "\"");
+        prototypeIndex_[key] = -1;  // being read: naming it again is a cycle
+        Prototype prototype;
+        prototype.file = file;
+        std::vector<Placement> nested;
+        if (mesh) {
+            Fail(object, "mesh files are not supported yet");
+        } else {
+            const OctreeFile octree = ReadOctree(in, *path);
+            const std::vector<SceneObject> objects = OctreeSceneObjects(octree, *path, options_, warn_);
+            prototype.cubeOrigin = octree.cubeOrigin;
+            prototype.cubeSize = octree.cubeSize;
+            // The octree's modifier names are its own (§13.1): build it with
+            // a fresh name table, into the prototype.
+            auto savedDefs = std::exchange(defs_, {});
+            auto savedNames = std::exchange(byName_, {});
+            auto* savedSurfaces = std::exchange(surfaces_, &prototype.surfaces);
+            auto* savedPlacements = std::exchange(placements_, &nested);
+            for (const SceneObject& o : objects) Add(o);
+            defs_ = std::move(savedDefs);
+            byName_ = std::move(savedNames);
+            surfaces_ = savedSurfaces;
+            placements_ = savedPlacements;
+        }
+        scene_.prototypes.push_back(std::move(prototype));
+        prototypePlacements_.push_back(std::move(nested));
+        const int index = static_cast<int>(scene_.prototypes.size()) - 1;
+        prototypeIndex_[key] = index;
+        return index;
+    }
+
+    /// Scene::instances for `placement`, written in a space that
+    /// `renderFromOuter` takes to world, and for every placement nested in its
+    /// prototype. An outer override wins over inner ones (Radiance's hit
+    /// object becomes the outermost instance with a modifier).
+    void Flatten(const Placement& placement, const Transform& renderFromOuter,
+                 const Surface* outerOverride, const std::optional<Transform>& outerOverrideSpace) {
+        if (scene_.instances.size() >= kMaxInstances) {
+            ThrowUserError(placement.loc, "more than " + std::to_string(kMaxInstances) +
+                                              " instances in all");
+        }
+        Instance instance;
+        instance.name = placement.name;
+        instance.prototype = placement.prototype;
+        instance.renderFromObject = Compose(placement.outerFromObject, renderFromOuter);
+        instance.objectFromRender = Inverse(instance.renderFromObject);
+        instance.loc = placement.loc;
+        const Surface* override = outerOverride;
+        std::optional<Transform> overrideSpace = outerOverrideSpace;
+        if (!override && placement.override) {
+            override = &*placement.override;
+            // Its patterns see the space it was written in.
+            if (!IsIdentity(renderFromOuter)) overrideSpace = Inverse(renderFromOuter);
+        }
+        if (override) {
+            instance.override = *override;
+            instance.overrideFromRender = overrideSpace;
+        }
+        const Transform renderFromObject = instance.renderFromObject;
+        scene_.instances.push_back(std::move(instance));
+        // By index: the vector of nested placements is not touched, but
+        // instances may reallocate.
+        const auto& nested = prototypePlacements_[static_cast<std::size_t>(placement.prototype)];
+        for (const Placement& inner : nested) {
+            Flatten(inner, renderFromObject, override, overrideSpace);
+        }
+    }
+
+    static bool IsIdentity(const Transform& t) {
+        const Transform identity;
+        for (int i = 0; i < 4; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                if (t.m[i][j] != identity.m[i][j]) return false;
+            }
+        }
+        return true;
     }
 
     bool SetPolygon(const SceneObject& object, Surface& surface) {
@@ -489,6 +660,9 @@ private:
                 bounds.Extend(center - d);
             }
         };
+        for (const Instance& instance : scene_.instances) {
+            bounds.Extend(InstanceBounds(scene_, instance));
+        }
         for (const Surface& surface : scene_.surfaces) {
             if (const auto* cone = std::get_if<Cone>(&surface.shape)) {
                 const Vec3 axis = Normalize(cone->p1 - cone->p0);
@@ -520,7 +694,18 @@ private:
     }
 
     const WarningSink& warn_;
+    const SceneLoadOptions& options_;
     cal::SearchPath searchPath_ = cal::SearchPath::FromEnvironment();
+    /// Where surfaces and placements go: the scene's, or those of the
+    /// prototype being read.
+    std::vector<Surface>* surfaces_ = &scene_.surfaces;
+    std::vector<Placement> topPlacements_;
+    std::vector<Placement>* placements_ = &topPlacements_;
+    /// "octree:name" / "mesh:name" -> index into Scene::prototypes; -1 while
+    /// that file is being read.
+    std::unordered_map<std::string, int> prototypeIndex_;
+    /// Per prototype, the placements written inside it.
+    std::vector<std::vector<Placement>> prototypePlacements_;
     std::shared_ptr<cal::Program> functions_;
     Scene scene_;
     std::vector<ModifierDef> defs_;
@@ -529,8 +714,9 @@ private:
 
 }  // namespace
 
-Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn) {
-    SceneBuilder builder(warn);
+Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn,
+                 const SceneLoadOptions& options) {
+    SceneBuilder builder(warn, options);
     for (const SceneObject& object : objects) builder.Add(object);
     return builder.Finish();
 }

@@ -103,11 +103,24 @@ std::string CommandOutput(const std::string& command, const SceneLoadOptions& op
     return out;
 }
 
-/// Builds the scene an octree describes: its own objects if frozen, else its
-/// scene files re-read (with their `!commands`) and checked against it.
+/// Builds the scene an octree describes, with the octree's cube and header.
 Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptions& options,
                  const WarningSink& warn, bool firstLineRead = false) {
     const OctreeFile octree = ReadOctree(in, name, firstLineRead);
+    Scene scene = BuildScene(OctreeSceneObjects(octree, name, options, warn), warn, options);
+    // The octree's cube is the scene's: -ar means what it means to Radiance
+    // on the same file.
+    scene.cubeOrigin = octree.cubeOrigin;
+    scene.cubeSize = octree.cubeSize;
+    scene.headerLines = octree.headerLines;
+    return scene;
+}
+
+}  // namespace
+
+std::vector<SceneObject> OctreeSceneObjects(const OctreeFile& octree, const std::string& name,
+                                            const SceneLoadOptions& options,
+                                            const WarningSink& warn) {
     std::vector<SceneObject> objects;
     if (octree.frozen()) {
         objects = octree.objects;
@@ -121,16 +134,8 @@ Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptio
         }
     }
     CheckOctreeObjects(octree, objects, name);
-    Scene scene = BuildScene(objects, warn);
-    // The octree's cube is the scene's: -ar means what it means to Radiance
-    // on the same file.
-    scene.cubeOrigin = octree.cubeOrigin;
-    scene.cubeSize = octree.cubeSize;
-    scene.headerLines = octree.headerLines;
-    return scene;
+    return objects;
 }
-
-}  // namespace
 
 Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& options,
                 const WarningSink& warn) {
@@ -144,7 +149,7 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         std::getline(std::cin, first);
         if (first == "#?RADIANCE") return LoadOctree(std::cin, "<stdin>", options, warn, true);
         std::vector<SceneObject> objects = ReadSceneObjects(std::cin, "<stdin>", options, warn);
-        return BuildScene(objects, warn);
+        return BuildScene(objects, warn, options);
     }
     for (const std::string& file : files) {
         const bool command = file.starts_with("!");
@@ -190,7 +195,7 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         objects.insert(objects.end(), std::make_move_iterator(more.begin()),
                        std::make_move_iterator(more.end()));
     }
-    return BuildScene(objects, warn);
+    return BuildScene(objects, warn, options);
 }
 
 }  // namespace rt

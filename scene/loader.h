@@ -23,6 +23,9 @@ struct SceneLoadOptions {
     /// False: a `!command` line is an error ("commands disabled") instead of being
     /// run, for untrusted input (the fuzzers in tests/fuzz/).
     bool runCommands = true;
+    /// False: `instance` and `mesh` primitives are an error ("files disabled")
+    /// instead of reading the files they name, for untrusted input.
+    bool readFiles = true;
 };
 
 /// Parses one scene stream into raw objects; `name` is used in error locations.
@@ -36,7 +39,20 @@ std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& n
 /// Resolves modifiers and aliases and interprets every object. Throws rt::Error
 /// naming the object's file:line for undefined modifiers, bad argument counts,
 /// unsupported types, degenerate geometry that Radiance treats as fatal.
-Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn);
+/// Octrees named by `instance` and mesh files named by `mesh` are found on
+/// RAYPATH and read here; `options` applies to the scene files of non-frozen
+/// instanced octrees.
+Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn,
+                 const SceneLoadOptions& options = {});
+
+struct OctreeFile;
+/// The objects an octree describes: its own if frozen, else its scene files
+/// re-read relative to the current directory (with their `!commands`) and
+/// checked against it (Radiance's stale-octree test). `name` is the octree's,
+/// for messages.
+std::vector<SceneObject> OctreeSceneObjects(const OctreeFile& octree, const std::string& name,
+                                            const SceneLoadOptions& options,
+                                            const WarningSink& warn);
 
 /// Reads the files in order ("-" is standard input) and builds the scene.
 Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& options,

@@ -63,4 +63,15 @@ Bounds3 SurfaceBounds(const Surface& surface) {
     return bounds;  // distant source: empty
 }
 
+Bounds3 InstanceBounds(const Scene& scene, const Instance& instance) {
+    const Prototype& p = scene.prototypes[static_cast<std::size_t>(instance.prototype)];
+    Bounds3 bounds;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 c = p.cubeOrigin + Vec3(corner & 1 ? p.cubeSize : 0, corner & 2 ? p.cubeSize : 0,
+                                           corner & 4 ? p.cubeSize : 0);
+        bounds.Extend(instance.renderFromObject.Point(c));
+    }
+    return bounds;
+}
+
 }  // namespace rt

@@ -9,7 +9,10 @@
 // at load time with "file:line: unsupported material type 'X'".
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -111,7 +114,12 @@ struct DistantSource {
     double angleDegrees = 0; // full angular diameter
 };
 
-enum class SurfaceType { Polygon, Sphere, Bubble, Cone, Cup, Cylinder, Tube, Ring, Source };
+/// Instance and Mesh are not geometry: they are the pseudo-surfaces that shade
+/// hits inside an instance or mesh whose own modifier replaces the inner
+/// materials (and, for Mesh, the per-material surfaces of a mesh file), as
+/// Radiance's hit object becomes the instance or the mesh (radiance-functions.md
+/// §13.2, §13.4). Their shape is an empty Polygon.
+enum class SurfaceType { Polygon, Sphere, Bubble, Cone, Cup, Cylinder, Tube, Ring, Source, Instance, Mesh };
 
 struct Surface {
     std::string name;
@@ -126,6 +134,56 @@ struct Surface {
     FileLoc loc;
 };
 
+/// Triangles of a Radiance mesh file (`.rtm`, radiance-functions.md §13.3),
+/// in mesh coordinates.
+struct TriangleMesh {
+    std::vector<Vec3> vertices;
+    /// Per vertex, unit; (0,0,0) where a vertex has none. Empty: no normals.
+    std::vector<Vec3> normals;
+    /// Per vertex (u, v); empty when no vertex has them. hasUv per vertex.
+    std::vector<std::array<double, 2>> uvs;
+    std::vector<std::uint8_t> hasUv;
+    struct Triangle {
+        std::array<int, 3> v;  // indices into vertices, counter-clockwise seen from the front
+        int surface = -1;      // the Prototype's pseudo-surface for the triangle's material
+    };
+    std::vector<Triangle> triangles;
+};
+
+/// Geometry in its own coordinates, placed in the scene by instances: the
+/// contents of an octree that `instance` primitives name, or of a mesh file
+/// that `mesh` primitives name. Loaded once per file name as written.
+struct Prototype {
+    std::string file;
+    /// Surfaces in object coordinates, their materials indices into
+    /// Scene::materials. A light material here never makes a light source
+    /// (radiance-functions.md §13.1). For a mesh: one pseudo-surface
+    /// (SurfaceType::Mesh) per material its triangles use.
+    std::vector<Surface> surfaces;
+    std::shared_ptr<const TriangleMesh> mesh;  // null for an octree
+    /// The octree's or the mesh's cube: placed, its 8 corners bound the instance.
+    Vec3 cubeOrigin;
+    double cubeSize = 0;
+};
+
+/// One placement of a Prototype in the scene. Instances nested in instanced
+/// octrees are flattened: each is placed here with its composed transform.
+struct Instance {
+    std::string name;             // the instance/mesh primitive's identifier
+    int prototype = -1;           // index into Scene::prototypes
+    /// Object to world (row vectors, radiance-notes' Ff), its scale the
+    /// positive uniform factor (a mirror keeps |scale|, as Radiance does).
+    Transform renderFromObject;
+    Transform objectFromRender;   // the inverse (Fb)
+    /// Set when a modifier other than void replaces every inner material: the
+    /// pseudo-surface (SurfaceType::Instance or Mesh) that shades all hits.
+    std::optional<Surface> override;
+    /// Where the overriding modifier's patterns are evaluated: the space the
+    /// overriding placement was made in. Null for world space.
+    std::optional<Transform> overrideFromRender;
+    FileLoc loc;
+};
+
 struct Scene {
     std::vector<Material> materials;
     std::vector<Pattern> patterns;
@@ -134,6 +192,8 @@ struct Scene {
     /// shading thread evaluates with its own cal::Context.
     std::shared_ptr<const cal::Program> functions;
     std::vector<Surface> surfaces;   // in file order; includes distant sources
+    std::vector<Prototype> prototypes;
+    std::vector<Instance> instances;
     /// oconv's cube (§2.2): bounding box of all non-source surfaces grown by
     /// 1e-5 each side; `cubeSize` is its largest extent. Drives -ar and miss distances.
     Vec3 cubeOrigin;
@@ -152,7 +212,31 @@ struct Scene {
     /// distanceTolerance / kFtiny, in (0, 1]: the factor applied to Radiance's
     /// other absolute lengths (the -I offsets, the ambient "behind" margin).
     double ToleranceScale() const { return distanceTolerance / kFtiny; }
+
+    /// The surface that shades a hit on `surface` of `instance` (-1: a
+    /// surface of the scene itself): the instance's override if it has one.
+    const Surface& HitSurface(int instance, int surface) const {
+        if (instance < 0) return surfaces[static_cast<std::size_t>(surface)];
+        const Instance& in = instances[static_cast<std::size_t>(instance)];
+        if (in.override) return *in.override;
+        return prototypes[static_cast<std::size_t>(in.prototype)]
+            .surfaces[static_cast<std::size_t>(surface)];
+    }
+
+    /// The space a hit's patterns are evaluated in, before their own
+    /// transforms: the instance's object space when the inner materials
+    /// shade it, the overriding placement's space otherwise. Null for world.
+    const Transform* PatternSpace(int instance) const {
+        if (instance < 0) return nullptr;
+        const Instance& in = instances[static_cast<std::size_t>(instance)];
+        if (in.override) return in.overrideFromRender ? &*in.overrideFromRender : nullptr;
+        return &in.objectFromRender;
+    }
 };
+
+/// World bounds of an instance: its prototype's cube, placed (the 8 corners
+/// transformed, as oconv bounds instances).
+Bounds3 InstanceBounds(const Scene& scene, const Instance& instance);
 
 /// Axis-aligned bounds of a surface's geometry (empty for a distant source).
 Bounds3 SurfaceBounds(const Surface& surface);

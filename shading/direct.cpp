@@ -74,7 +74,7 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
         } else if (aimed.aimSuccess < LightSource::kAimCredit) {
             ++aimed.aimSuccess;
         }
-        sray.SetHit(*hit);
+        sray.SetHit(*hit, scene_.PatternSpace(hit->instance));
     }
     sray.rcol = Rgb();
     ApplyPatterns(sray, surface.patterns);
@@ -229,8 +229,8 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         // black, transparent ones transmit); with -oT every shadow ray is
         // followed so that it can be reported, as Radiance's SFOLLOW flag does.
         if (auto hit = core_.Intersect(sray.org, sray.dir, 0.0);
-            hit && (hit->surface != src.surface || traceShadows_)) {
-            sray.SetHit(*hit);
+            hit && (hit->instance >= 0 || hit->surface != src.surface || traceShadows_)) {
+            sray.SetHit(*hit, scene_.PatternSpace(hit->instance));
             ContinueShadowRay(sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;

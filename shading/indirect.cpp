@@ -27,7 +27,7 @@ constexpr double kAverageReflectance = 0.5;
 bool Integrator::AmbientExcluded(const TracedRay& ray) const {
     if (ambientList_.empty() && !ambient_.listIsInclude) return false;
     if (ray.surface < 0 || ray.hitDistant) return false;  // -I: no object to test
-    const bool listed = ambientList_.count(scene_.surfaces[ray.surface].modifierName) > 0;
+    const bool listed = ambientList_.count(scene_.HitSurface(ray.instance, ray.surface).modifierName) > 0;
     return ambient_.listIsInclude ? !listed : listed;
 }
 

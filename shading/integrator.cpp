@@ -133,7 +133,7 @@ void Integrator::Trace(TracedRay& ray) {
     ray.rcol = Rgb();
     ray.mcol = Rgb();
     if (auto hit = core_.Intersect(ray.org, ray.dir, ray.rmax)) {
-        ray.SetHit(*hit);
+        ray.SetHit(*hit, scene_.PatternSpace(hit->instance));
         Shade(ray);
     } else if (ray.rmax > 0) {
         // -ld: nothing before the clipping distance; no distant-source test.
@@ -151,7 +151,7 @@ void Integrator::Trace(TracedRay& ray) {
 }
 
 void Integrator::Shade(TracedRay& ray) {
-    const Surface& surface = scene_.surfaces[ray.surface];
+    const Surface& surface = scene_.HitSurface(ray.instance, ray.surface);
     if (surface.material < 0) return;  // void: nothing to shade, black
     const Material& m = scene_.materials[surface.material];
     ApplyPatterns(ray, surface.patterns);
@@ -192,7 +192,7 @@ Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double of
     for (const Vec3& d : {frame.u, -frame.u, frame.v, -frame.v}) {
         // A surface through the point crosses this short probe at its middle.
         const auto wall = core_.Intersect(point - d * offset, d, 2 * offset);
-        if (!wall || wall->surface == floor->surface ||
+        if (!wall || wall->SameSurface(*floor) ||
             std::fabs(wall->t - offset) > 1e-2 * offset) {
             continue;
         }
@@ -200,7 +200,7 @@ Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double of
         const auto floorOn = [&](double side) {
             const auto h = core_.Intersect(point + wall->normal * (side * offset), -normal,
                                            2 * offset);
-            return h && h->surface == floor->surface;
+            return h && h->SameSurface(*floor);
         };
         const bool front = floorOn(1), back = floorOn(-1);
         if (front != back) point += wall->normal * (front ? offset : -offset);
@@ -242,7 +242,7 @@ RayResult Integrator::MakeResult(const TracedRay& ray) const {
     r.coefficient = coef;
     r.contribution = ray.rcol * coef;
     if (ray.surface >= 0 && !ray.irradianceHit) {
-        const Surface& s = scene_.surfaces[ray.surface];
+        const Surface& s = scene_.HitSurface(ray.instance, ray.surface);
         r.normal = ray.ron;
         r.geometricNormal = ray.geometricNormal;
         r.surfaceName = s.name;

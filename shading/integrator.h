@@ -66,12 +66,18 @@ struct TracedRay {
     int depth = 0;             // ray-tree depth for trace output
 
     // Filled by tracing.
-    int surface = -1;          // hit surface (index into Scene::surfaces) or -1
+    int surface = -1;          // hit surface (Scene::HitSurface(instance, surface)) or -1
+    int instance = -1;         // instance the hit surface is in, -1 for none
+    /// World to the space patterns start from (Scene::PatternSpace): an
+    /// instance's object space; null for world space.
+    const Transform* objectFromRender = nullptr;
     bool hitDistant = false;   // hit a distant source (surface is then that source)
     double rot = kFhuge;       // first intersection distance
     Vec3 rop;                  // intersection point
     Vec3 ron;                  // normal at rop, flipped by materials toward the ray
     Vec3 geometricNormal;      // unflipped normal as the surface defines it
+    Vec3 pert;                 // normal perturbation (textures; mesh vertex normals), world space; negated with the surface
+    double lu = 0, lv = 0;     // mesh (u,v) at the hit (Lu, Lv), 0 when none
     double rod = 0;            // -Dot(dir, ron): > 0 on the front
     Rgb pcol{1, 1, 1};         // pattern colour: the product of the patterns met
     bool irradianceHit = false;  // -I pretend hit (no object)
@@ -91,6 +97,8 @@ struct TracedRay {
     /// sourcehit(): no hit point, the normal faces the ray).
     void SetDistantHit(int sourceSurface) {
         surface = sourceSurface;
+        instance = -1;
+        objectFromRender = nullptr;
         hitDistant = true;
         rot = kFhuge;
         rop = org;
@@ -99,12 +107,20 @@ struct TracedRay {
     }
 
     /// Records where the ray hit a surface (before any shading flips).
-    void SetHit(const Hit& hit) {
+    /// `patternSpace` is Scene::PatternSpace(hit.instance).
+    void SetHit(const Hit& hit, const Transform* patternSpace) {
         surface = hit.surface;
+        instance = hit.instance;
+        objectFromRender = patternSpace;
         rot = rmt = rxt = hit.t;
         rop = hit.point;
         ron = geometricNormal = hit.normal;
         rod = -Dot(dir, hit.normal);
+        // Mesh vertex normals shade as a perturbation (o_mesh.c), so that
+        // patterns still see the geometric normal.
+        pert = hit.shadingNormal - hit.normal;
+        lu = hit.u;
+        lv = hit.v;
     }
 };
 

@@ -23,8 +23,11 @@ Rgb Colour(const Material& m) { return {m.args[0], m.args[1], m.args[2]}; }
 
 bool IsFlat(const Scene& scene, const TracedRay& ray) {
     if (ray.surface < 0 || ray.hitDistant) return false;
-    SurfaceType t = scene.surfaces[ray.surface].type;
-    return t == SurfaceType::Polygon || t == SurfaceType::Ring;
+    // Radiance's isflat(): faces and rings; a mesh triangle shading with its
+    // own material is a face (its pseudo-object), one under an overriding
+    // instance or mesh modifier is not.
+    const SurfaceType t = scene.HitSurface(ray.instance, ray.surface).type;
+    return t == SurfaceType::Polygon || t == SurfaceType::Ring || t == SurfaceType::Mesh;
 }
 
 }  // namespace
@@ -251,7 +254,7 @@ void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
         return;
     }
     const bool aimedElsewhere =
-        ray.rsrc >= 0 && sources_[ray.rsrc].surface != ray.surface;
+        ray.rsrc >= 0 && (ray.instance >= 0 || sources_[ray.rsrc].surface != ray.surface);
     if (aimedElsewhere) {
         const Material& aimed = scene_.materials[sources_[ray.rsrc].material];
         bool illumBlocks = ray.rod > 0.0 && (aimed.type == MaterialType::Illum ||

@@ -17,11 +17,15 @@ namespace {
 constexpr double kMissLength = 0.99 * kFhuge;
 
 /// The ray quantities $1 … $27 of `ray` in the space of `pattern` (§10.3).
-/// F = pattern.patternFromWorld acts on row vectors; s is its scale.
+/// F acts on row vectors: the pattern's own transform, after the instance's
+/// when the hit is inside one (§10.1, §13.2); s is its scale.
 class PatternChannels final : public cal::ChannelSource {
 public:
     PatternChannels(const TracedRay& ray, const Pattern& pattern)
-        : ray_(ray), f_(pattern.patternFromWorld), s_(pattern.patternFromWorld.scale) {}
+        : ray_(ray),
+          f_(ray.objectFromRender ? Compose(*ray.objectFromRender, pattern.patternFromWorld)
+                                  : pattern.patternFromWorld),
+          s_(f_.scale) {}
 
     double Channel(int n) const override {
         using namespace cal;
@@ -60,7 +64,7 @@ private:
     }
 
     const TracedRay& ray_;
-    const Transform& f_;
+    const Transform f_;
     const double s_;
 };
 

@@ -17,12 +17,15 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     std::istringstream in(bytes);
     const rt::WarningSink warn = [](const std::string&) {};
+    rt::SceneLoadOptions options;  // untrusted: no commands, no instance files
+    options.runCommands = false;
+    options.readFiles = false;
     try {
         if (!rt::LooksLikeOctree(in)) return 0;
         const rt::OctreeFile octree = rt::ReadOctree(in, "fuzz.oct");
         if (octree.frozen()) {
             rt::CheckOctreeObjects(octree, octree.objects, "fuzz.oct");
-            static_cast<void>(rt::BuildScene(octree.objects, warn));
+            static_cast<void>(rt::BuildScene(octree.objects, warn, options));
         }
     } catch (const rt::Error&) {
         // Rejected input: expected.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
 // Fuzz target: arbitrary bytes as a .rad stream through ReadSceneObjects (with
-// `!command` lines disabled) and BuildScene. rt::Error is the expected way to
+// `!command` lines and instance files disabled) and BuildScene. rt::Error is the expected way to
 // reject input; any other exception, a crash, UB or a hang is a finding.
 #include <algorithm>
 #include <sstream>
@@ -19,11 +19,12 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
     std::istringstream in(text);
     rt::SceneLoadOptions options;
     options.runCommands = false;
+    options.readFiles = false;
     const rt::WarningSink warn = [](const std::string&) {};
     try {
         const std::vector<rt::SceneObject> objects =
             rt::ReadSceneObjects(in, "fuzz.rad", options, warn);
-        const rt::Scene scene = rt::BuildScene(objects, warn);
+        const rt::Scene scene = rt::BuildScene(objects, warn, options);
         // The ray core's scans for bounding polygons and for the light
         // sources' plane run on every scene it is given (Embree itself is left
         // out: a device per input is too slow).

@@ -73,12 +73,6 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
     EXPECT_EQ(BuildError("void mixfunc m 4 a b c . 0 0\n"),
               "t.rad:1: unsupported material type 'mixfunc'");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
-    EXPECT_EQ(BuildError("void instance i 1 x.oct 0 0\n"),
-              "t.rad:1: unsupported object type 'instance' (octree instances and meshes are not "
-              "supported)");
-    EXPECT_EQ(BuildError("void mesh m 1 x.rtm 0 0\n"),
-              "t.rad:1: unsupported object type 'mesh' (octree instances and meshes are not "
-              "supported)");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
               "t.rad:2: conflicting material \"a\" in the modifiers of plastic \"b\"");
@@ -263,6 +257,30 @@ TEST(BuildScene, RingsAndSources) {
               "t.rad:2: ring \"r\": zero normal");
     EXPECT_EQ(BuildError("void source s 0 0 4 0 0 0 1\n"), "t.rad:1: source \"s\": zero direction");
     EXPECT_EQ(BuildError("void source s 0 0 4 0 0 1 0\n"), "t.rad:1: source \"s\": zero size");
+}
+
+/// Instance and mesh files that are nowhere on RAYPATH are system errors,
+/// as in Radiance (exit status 2).
+TEST(BuildScene, MissingInstanceFilesAreSystemErrors) {
+    const auto missing = [](const std::string& text) {
+        return rt::testing::ErrorMessage([&] { rt::testing::BuildText(text); }, Error::Kind::System);
+    };
+    EXPECT_EQ(missing("void instance i 1 x.oct 0 0\n"), "t.rad:1: cannot find octree file \"x.oct\"");
+    EXPECT_EQ(missing("void mesh m 1 x.rtm 0 0\n"), "t.rad:1: cannot find mesh file \"x.rtm\"");
+}
+
+/// oconv bounds an instance by its octree's cube, placed (radiance-functions.md
+/// §13.1): two instances of a unit square, verified with Radiance's getinfo -d.
+TEST(BuildScene, InstancesBoundTheCubeByTheirPlacedCubes) {
+    const std::string square = std::string(RT_SOURCE_DIR) + "/tests/data/instance/square_frozen.oct";
+    const Scene scene = BuildText("void instance a 7 " + square + " -s 2 -t 10 0 0 0 0\n" +
+                                  "void instance b 5 " + square + " -t 0 10 0 0 0\n");
+    ASSERT_EQ(scene.instances.size(), 2u);
+    ASSERT_EQ(scene.prototypes.size(), 1u);  // one file, loaded once
+    EXPECT_NEAR(scene.cubeOrigin.x, -2e-05, 1e-10);
+    EXPECT_NEAR(scene.cubeOrigin.y, -0.50003, 1e-10);
+    EXPECT_NEAR(scene.cubeOrigin.z, -6.000025, 1e-10);
+    EXPECT_NEAR(scene.cubeSize, 12.00005, 1e-10);
 }
 
 TEST(BuildScene, CubeAsOconv) {
