@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "ambfiles/dircode.h"
 #include "core/conventions.h"
+#include "core/dircode.h"
 #include "core/portable.h"
 
 namespace rt {

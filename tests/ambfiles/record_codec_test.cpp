@@ -7,7 +7,7 @@
 #include <numbers>
 #include <random>
 
-#include "ambfiles/dircode.h"
+#include "core/dircode.h"
 #include "core/portable.h"
 #include "tests/ambfiles/test_util.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "ambfiles/dircode.h"
+#include "core/dircode.h"
 
 #include <cmath>
 
