@@ -46,6 +46,7 @@
 #include "raycore/hull.h"
 #include "raycore/shapes.h"
 #include "raycore/source_plane.h"
+#include "scene/mesh_file.h"
 
 namespace rt {
 
@@ -1032,9 +1033,9 @@ void RayCore::Impl::SetMeshAttributes(Hit& hit) const {
     const TriangleMesh& mesh = *prototypes[static_cast<size_t>(in.prototype)].geometry.mesh;
     const TriangleMesh::Triangle& tri = mesh.triangles[static_cast<size_t>(hit.triangle)];
     const Vec3 p = in.objectFromRender.Point(hit.point);
-    std::array<Vec3, 3> v;
-    for (int k = 0; k < 3; ++k) v[k] = mesh.vertices[static_cast<size_t>(tri.v[k])];
-    const auto w = BarycentricWeights(v, p);
+    const auto w = BarycentricWeights(mesh.vertices[static_cast<size_t>(tri.v[0])],
+                                      mesh.vertices[static_cast<size_t>(tri.v[1])],
+                                      mesh.vertices[static_cast<size_t>(tri.v[2])], p);
     if (!w) return;  // degenerate: no interpolation (Radiance warns "bad triangle")
     const auto vertex = [&](int k) { return static_cast<size_t>(tri.v[k]); };
     if (!mesh.normals.empty()) {

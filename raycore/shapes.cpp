@@ -264,24 +264,6 @@ std::vector<std::array<int, 3>> TriangulatePolygon(const Polygon& polygon) {
     return triangles;
 }
 
-std::optional<std::array<double, 3>> BarycentricWeights(const std::array<Vec3, 3>& v,
-                                                        const Vec3& p) {
-    const Vec3 n = Cross(v[1] - v[0], v[2] - v[0]);
-    int drop = 0;
-    if (std::fabs(n.y) > std::fabs(n[drop])) drop = 1;
-    if (std::fabs(n.z) > std::fabs(n[drop])) drop = 2;
-    const int a = (drop + 1) % 3, b = (drop + 2) % 3;
-    // Twice the signed areas in the (a, b) plane.
-    const auto area = [&](const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-        return (p1[a] - p0[a]) * (p2[b] - p0[b]) - (p2[a] - p0[a]) * (p1[b] - p0[b]);
-    };
-    const double whole = area(v[0], v[1], v[2]);
-    if (whole == 0 || !std::isfinite(whole)) return std::nullopt;
-    const double w0 = area(p, v[1], v[2]) / whole;
-    const double w1 = area(v[0], p, v[2]) / whole;
-    return std::array<double, 3>{w0, w1, 1.0 - w0 - w1};
-}
-
 Bounds3 ShapeBounds(const Surface& surface) {
     Bounds3 b;
     switch (surface.type) {

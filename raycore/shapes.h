@@ -64,12 +64,6 @@ std::optional<ShapeHit> IntersectPolygon(const Polygon& polygon, const Vec3& org
 /// result always covers the outline (never throws).
 std::vector<std::array<int, 3>> TriangulatePolygon(const Polygon& polygon);
 
-/// Radiance's barycentric weights of `p` in triangle `v` (o_mesh.c): solved
-/// in the coordinate plane that drops the triangle normal's largest
-/// component. nullopt for a degenerate triangle.
-std::optional<std::array<double, 3>> BarycentricWeights(const std::array<Vec3, 3>& v,
-                                                        const Vec3& p);
-
 /// Exact (double) bounds of the shape's geometry; empty for a distant source.
 Bounds3 ShapeBounds(const Surface& surface);
 

@@ -17,6 +17,7 @@
 #include "core/conventions.h"
 #include "scene/loader.h"
 #include "scene/object_types.h"
+#include "scene/mesh_file.h"
 #include "scene/octree.h"
 #include "scene/reader.h"
 #include "scene/transform.h"
@@ -436,7 +437,7 @@ private:
         prototype.file = file;
         std::vector<Placement> nested;
         if (mesh) {
-            Fail(object, "mesh files are not supported yet");
+            ReadMeshPrototype(in, *path, prototype);
         } else {
             const OctreeFile octree = ReadOctree(in, *path);
             const std::vector<SceneObject> objects = OctreeSceneObjects(octree, *path, options_, warn_);
@@ -459,6 +460,53 @@ private:
         const int index = static_cast<int>(scene_.prototypes.size()) - 1;
         prototypeIndex_[key] = index;
         return index;
+    }
+
+    /// A mesh file's triangles and, for each material they use, the
+    /// pseudo-surface that shades them (Radiance's "M-Tri" face objects).
+    void ReadMeshPrototype(std::istream& in, const std::string& path, Prototype& prototype) {
+        MeshFile file = ReadMesh(in, path);
+        prototype.cubeOrigin = file.cubeOrigin;
+        prototype.cubeSize = file.cubeSize;
+        // The mesh's materials have names of their own, as an instanced
+        // octree's do; each object defines exactly one modifier.
+        auto savedDefs = std::exchange(defs_, {});
+        auto savedNames = std::exchange(byName_, {});
+        std::vector<int> defOf;
+        defOf.reserve(file.materials.size());
+        for (const SceneObject& o : file.materials) {
+            Add(o);
+            defOf.push_back(static_cast<int>(defs_.size()) - 1);
+        }
+        // Index into prototype.surfaces per material (+1: slot 0 is void).
+        std::vector<int> surfaceOf(file.materials.size() + 1, -1);
+        const auto surfaceFor = [&](int material) {
+            int& slot = surfaceOf[static_cast<std::size_t>(material + 1)];
+            if (slot < 0) {
+                Surface surface;
+                surface.name = "M-Tri";
+                surface.type = SurfaceType::Mesh;
+                surface.modifierName =
+                    material < 0 ? "void" : file.materials[static_cast<std::size_t>(material)].name;
+                if (material >= 0) SetModifiers(surface, defOf[static_cast<std::size_t>(material)]);
+                surface.loc = FileLoc{path, 0, 0};
+                prototype.surfaces.push_back(std::move(surface));
+                slot = static_cast<int>(prototype.surfaces.size()) - 1;
+            }
+            return slot;
+        };
+        auto mesh = std::make_shared<TriangleMesh>();
+        mesh->triangles.reserve(file.triangles.size());
+        for (const MeshFile::Triangle& t : file.triangles) {
+            mesh->triangles.push_back({t.v, surfaceFor(t.material)});
+        }
+        mesh->vertices = std::move(file.vertices);
+        mesh->normals = std::move(file.normals);
+        mesh->uvs = std::move(file.uvs);
+        mesh->hasUv = std::move(file.hasUv);
+        prototype.mesh = std::move(mesh);
+        defs_ = std::move(savedDefs);
+        byName_ = std::move(savedNames);
     }
 
     /// Scene::instances for `placement`, written in a space that

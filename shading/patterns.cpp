@@ -42,7 +42,9 @@ public:
             case kJx: case kJy: case kJz: return f_.m[1][n - kJx] / s_;
             case kKx: case kKy: case kKz: return f_.m[2][n - kKx] / s_;
             case kTs: return s_ * PathLength(true);
-            default: return 0.0;  // Lu, Lv: no meshes yet
+            case kLu: return ray_.lu;
+            case kLv: return ray_.lv;
+            default: return 0.0;
         }
     }
 
