@@ -25,6 +25,7 @@ extern "C" int FuzzRaysEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzAmbfileEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzCalEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzOctreeEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzDatafileEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -80,6 +81,10 @@ TEST(FuzzRegression, CalCorpusAndRegressions) {
 
 TEST(FuzzRegression, OctreeCorpusAndRegressions) {
     EXPECT_GT(Replay("octree", &FuzzOctreeEntry), 0u);
+}
+
+TEST(FuzzRegression, DatafileCorpusAndRegressions) {
+    EXPECT_GT(Replay("datafile", &FuzzDatafileEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a
