@@ -88,16 +88,27 @@ struct ModifierDef {
     int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
 };
 
-/// The pattern types lazyrad evaluates, with where their string arguments
-/// put the function file: brightfunc `v file [xf]`, colorfunc `r g b file [xf]`.
+/// The pattern types lazyrad evaluates and the layout of their string
+/// arguments (radiance-functions.md §11.2): `functions` function names, then
+/// `dataFiles` data files or a picture, then the function file, then the
+/// expressions (-1: as many as the first data file has dimensions), then an
+/// optional transform. brightfunc `v file`, colorfunc `r g b file`,
+/// brightdata `f data file x1…xn`, colordata `fr fg fb dr dg db file x1…xn`,
+/// colorpict `fr fg fb pict file u v`.
 struct PatternSpec {
     const char* name;
     PatternType type;
     int expressions;
+    int functions = 0;
+    int dataFiles = 0;
+    bool picture = false;
 };
 constexpr PatternSpec kPatternSpecs[] = {
     {"brightfunc", PatternType::BrightFunc, 1},
     {"colorfunc", PatternType::ColorFunc, 3},
+    {"brightdata", PatternType::BrightData, -1, 1, 1},
+    {"colordata", PatternType::ColorData, -1, 3, 3},
+    {"colorpict", PatternType::ColorPict, 2, 3, 1, true},
 };
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
@@ -268,17 +279,38 @@ private:
     void AddPattern(const SceneObject& object) {
         const PatternSpec& spec = *FindPatternSpec(object.type);
         const auto& words = object.sargs;
-        const std::size_t fileAt = static_cast<std::size_t>(spec.expressions);
-        if (words.size() < fileAt + 1) BadArgs(object);
+        const std::string where = object.loc.ToString();
         Pattern pattern;
         pattern.name = object.name;
         pattern.type = spec.type;
         pattern.owner = Describe(object);
         pattern.args = object.rargs;
         pattern.loc = object.loc;
-        // The transform: the first word after the file that starts with '-',
-        // and everything after it (words in between are ignored, §10.2).
-        std::size_t xfAt = fileAt + 1;
+        std::size_t expressions = static_cast<std::size_t>(std::max(spec.expressions, 0));
+        const bool hasData = spec.functions > 0;
+        const std::size_t fileAt =
+            hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : expressions;
+        std::size_t exprAt = 0;
+        if (!hasData) {
+            if (words.size() < fileAt + 1) BadArgs(object);
+        } else {
+            // Radiance loads the data before anything else: its dimensions
+            // are the number of coordinate expressions.
+            exprAt = fileAt + 1;
+            if (words.size() < exprAt + (spec.picture ? 2 : 1)) BadArgs(object);
+            LoadData(spec, object, pattern.data);
+            if (!spec.picture) {
+                expressions = static_cast<std::size_t>(pattern.data.arrays[0]->dimensions());
+            }
+            if (words.size() < exprAt + expressions) {
+                Fail(object, "too few string arguments (" + std::to_string(expressions) +
+                                 " coordinates for the data's dimensions)");
+            }
+        }
+        // The transform: the first word after the expressions and the file
+        // that starts with '-', and everything after it (words in between are
+        // ignored, §10.2).
+        std::size_t xfAt = hasData ? exprAt + expressions : fileAt + 1;
         while (xfAt < words.size() && words[xfAt].rfind('-', 0) != 0) ++xfAt;
         if (xfAt < words.size()) {
             const ParsedTransform xf = ParseTransformArgs(words, xfAt);
@@ -289,15 +321,46 @@ private:
             pattern.patternFromWorld.scale = std::fabs(pattern.patternFromWorld.scale);
         }
         cal::Program& functions = Functions();
-        const std::string where = object.loc.ToString();
         const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
-        for (std::size_t k = 0; k < fileAt; ++k) {
-            pattern.values.push_back(
-                functions.CompileExpression(words[k], where + ": " + pattern.owner, context));
+        for (std::size_t k = 0; k < expressions; ++k) {
+            pattern.values.push_back(functions.CompileExpression(
+                words[exprAt + k], where + ": " + pattern.owner, context));
+        }
+        for (int k = 0; k < spec.functions; ++k) {
+            const std::string& name = words[static_cast<std::size_t>(k)];
+            const std::optional<cal::Function> f = functions.FindFunction(name, context);
+            if (!f) {
+                ThrowUserError(object.loc, pattern.owner + ": " + PrintableWord(name) +
+                                               ": undefined function");
+            }
+            pattern.data.functions.push_back(*f);
+            // colordata and colorpict give a function of three or more
+            // parameters all three values, others their own channel's.
+            pattern.data.argCounts.push_back(
+                spec.functions == 3 && functions.Arity(*f) >= 3 ? 3 : 1);
         }
         scene_.patterns.push_back(std::move(pattern));
         Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1,
                                         ResolveModifier(object)});
+    }
+
+    /// The data files (sargs after the function names) or the picture of a
+    /// *data / *pict pattern, each file loaded once per scene.
+    void LoadData(const PatternSpec& spec, const SceneObject& object, DataLookup& data) {
+        const std::string requestedBy = object.loc.ToString() + ": " + Describe(object);
+        const std::size_t first = static_cast<std::size_t>(spec.functions);
+        if (spec.picture) {
+            const auto channels = dataFiles_.Picture(object.sargs[first], requestedBy);
+            data.arrays.assign(channels.begin(), channels.end());
+            data.picture = true;
+            return;
+        }
+        for (std::size_t k = first; k < first + static_cast<std::size_t>(spec.dataFiles); ++k) {
+            data.arrays.push_back(dataFiles_.Data(object.sargs[k], requestedBy));
+            if (data.arrays.back()->dimensions() != data.arrays.front()->dimensions()) {
+                Fail(object, "dimension error (data files of different dimensions)");
+            }
+        }
     }
 
     void AddMaterial(const SceneObject& object) {
@@ -754,6 +817,7 @@ private:
     std::unordered_map<std::string, int> prototypeIndex_;
     /// Per prototype, the placements written inside it.
     std::vector<std::vector<Placement>> prototypePlacements_;
+    DataFileCache dataFiles_{searchPath_};
     std::shared_ptr<cal::Program> functions_;
     Scene scene_;
     std::vector<ModifierDef> defs_;

@@ -5,8 +5,9 @@
 // Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
 //
 // Only what lazyrad can shade is represented: materials and the patterns
-// brightfunc and colorfunc. A scene using any other modifier type is rejected
-// at load time with "file:line: unsupported material type 'X'".
+// brightfunc, colorfunc, brightdata, colordata and colorpict. A scene using
+// any other modifier type is rejected at load time with
+// "file:line: unsupported material type 'X'".
 #pragma once
 
 #include <array>
@@ -22,6 +23,7 @@
 #include "core/conventions.h"
 #include "core/error.h"
 #include "core/vecmath.h"
+#include "scene/data_file.h"
 
 namespace rt {
 
@@ -53,16 +55,19 @@ struct Material {
     FileLoc loc;
 };
 
-enum class PatternType { BrightFunc, ColorFunc };
+enum class PatternType { BrightFunc, ColorFunc, BrightData, ColorData, ColorPict };
 
-/// A pattern (radiance-functions.md §11.2, §11.4): function-language
-/// expressions evaluated at each hit in the pattern's own space, multiplying
-/// the ray's pattern colour. Compiled into Scene::functions at load time.
+/// A pattern (radiance-functions.md §11.2, §11.4, §11.5, §11.7):
+/// function-language expressions evaluated at each hit in the pattern's own
+/// space, multiplying the ray's pattern colour; for the *data and *pict types
+/// they are coordinates in data looked up and mapped by named functions.
+/// Compiled into Scene::functions at load time.
 struct Pattern {
     std::string name;
     PatternType type;
     std::string owner;                    // `brightfunc "name"`, for messages
-    std::vector<cal::Expression> values;  // brightfunc: 1, colorfunc: r g b
+    std::vector<cal::Expression> values;  // brightfunc: 1, colorfunc: r g b; else coordinates
+    DataLookup data;                      // *data, *pict: the arrays and functions; empty otherwise
     std::vector<double> args;             // real arguments: arg(n), A1, …
     /// World to pattern space (the inverse of the transform arguments, §10.1);
     /// its scale is the positive factor S (mirrors do not make it negative).

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 //
-// Patterns at a hit (radiance-functions.md §10.3, §11.1-11.4): the ray's
+// Patterns at a hit (radiance-functions.md §10.3, §11.1-11.7): the ray's
 // quantities in the pattern's space as the function language's channels, and
 // the pattern colour each pattern of a modifier chain multiplies in.
 #include <algorithm>
 #include <cmath>
 
 #include "cal/ray_variables.h"
+#include "scene/data_file.h"
 #include "shading/integrator.h"
 
 namespace rt {
@@ -83,8 +84,21 @@ void Integrator::ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns)
         context.SetArguments(pattern.args, pattern.owner);
         context.NextEvaluation();
         double v[3] = {1.0, 1.0, 1.0};
-        for (std::size_t k = 0; k < pattern.values.size(); ++k) {
-            v[k] = functions.Evaluate(pattern.values[k], context);
+        if (pattern.data.arrays.empty()) {
+            for (std::size_t k = 0; k < pattern.values.size(); ++k) {
+                v[k] = functions.Evaluate(pattern.values[k], context);
+            }
+        } else {
+            // *data and *pict: the expressions are the coordinates (at most
+            // kMaxDataDimensions; pictures 2) of the data point.
+            double point[kMaxDataDimensions] = {};
+            for (std::size_t k = 0; k < pattern.values.size(); ++k) {
+                point[k] = functions.Evaluate(pattern.values[k], context);
+            }
+            const auto f = EvaluateDataLookup(
+                pattern.data, std::span<const double>(point, pattern.values.size()), functions,
+                context);
+            std::copy(f.begin(), f.end(), v);
         }
         context.SetChannels(nullptr);
         if (context.mathError() != cal::MathError::None) {
@@ -95,8 +109,9 @@ void Integrator::ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns)
             }
             continue;
         }
-        ray.pcol *= pattern.type == PatternType::BrightFunc ? Rgb(v[0], v[0], v[0])
-                                                            : Rgb(v[0], v[1], v[2]);
+        const bool grey =
+            pattern.type == PatternType::BrightFunc || pattern.type == PatternType::BrightData;
+        ray.pcol *= grey ? Rgb(v[0], v[0], v[0]) : Rgb(v[0], v[1], v[2]);
     }
 }
 

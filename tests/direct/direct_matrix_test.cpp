@@ -10,7 +10,11 @@
 //   colorfunc with every ray quantity and transforms, modifier chains and
 //   aliases, patterned light sources, gensky and gendaylit skies, errors),
 //   answers in tests/data/patterns/expected.txt. lazyrad runs with RAYPATH
-//   unset, so its own lib/ function files stand in for Radiance's.
+//   unset, so its own lib/ function files stand in for Radiance's;
+// - data files and pictures as patterns (tests/direct/generate_datafiles.py:
+//   brightdata, colordata, colorpict, an ies2rad-style luminaire, bad input),
+//   answers in tests/data/datafiles/expected.txt; lazyrad runs with RAYPATH
+//   set to that folder (its own source.cal and rayinit.cal are built in).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -118,6 +122,7 @@ const std::vector<MatrixRun>& Matrix() {
     static const std::vector<MatrixRun> runs = [] {
         std::vector<MatrixRun> all = LoadMatrix("direct");
         for (MatrixRun& r : LoadMatrix("patterns")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("datafiles")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -207,8 +212,13 @@ Outcome RunLazyrad(const MatrixRun& r) {
     args.insert(args.end(), r.options.begin(), r.options.end());
     for (const auto& f : r.files) args.push_back(DataDir(r.dataset) + f);
     std::ifstream raysFile(DataDir(r.dataset) + r.rays);
-    // lazyrad's own function files, whatever the environment says.
-    unsetenv("RAYPATH");
+    // lazyrad's own function files, whatever the environment says; the data
+    // files' cases find their .dat, .cal and pictures in their own folder.
+    if (r.dataset == "datafiles") {
+        setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
+    } else {
+        unsetenv("RAYPATH");
+    }
     std::string rays;
     for (std::string line; std::getline(raysFile, line);)
         for (int k = 0; k < r.repeat; ++k) rays += line + "\n";
@@ -304,6 +314,8 @@ void PrintTo(const Group& g, std::ostream* os) { *os << g.dataset << "/" << g.na
 INSTANTIATE_TEST_SUITE_P(Sources, DirectMatrix, ::testing::ValuesIn(Groups("direct")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Patterns, DirectMatrix, ::testing::ValuesIn(Groups("patterns")),
                          GroupName);
+INSTANTIATE_TEST_SUITE_P(DataFiles, DirectMatrix, ::testing::ValuesIn(Groups("datafiles")),
+                         GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -328,6 +340,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Matrix().size(), 1600u);
     EXPECT_GE(Groups("direct").size(), 60u);
     EXPECT_GE(Groups("patterns").size(), 6u);
+    EXPECT_GE(Groups("datafiles").size(), 7u);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ extern "C" int FuzzAmbfileEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzCalEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzOctreeEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzMeshEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzDatafileEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -85,6 +86,10 @@ TEST(FuzzRegression, OctreeCorpusAndRegressions) {
 
 TEST(FuzzRegression, MeshCorpusAndRegressions) {
     EXPECT_GT(Replay("mesh", &FuzzMeshEntry), 0u);
+}
+
+TEST(FuzzRegression, DatafileCorpusAndRegressions) {
+    EXPECT_GT(Replay("datafile", &FuzzDatafileEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

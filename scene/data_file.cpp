@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: MIT
+//
+// Radiance's data.c (getdata, getpict, datavalue) and the word reader of
+// fgetval.c, as radiance-functions.md §11.6-11.7 describe them and real
+// Radiance 5.4a behaves (tests/scene/data_file_test.cpp,
+// tests/data/datafiles/).
+#include "scene/data_file.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include "core/error.h"
+#include "image/hdr.h"
+
+namespace rt {
+namespace {
+
+/// fgetval.c reads words into a 64-byte buffer: a word this long or longer
+/// is a format error.
+constexpr std::size_t kMaxWordLength = 63;
+
+bool IsSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
+bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+
+/// Radiance's isint(): an optional sign and at least one digit.
+bool IsIntegerWord(std::string_view w) {
+    std::size_t k = 0;
+    if (k < w.size() && (w[k] == '+' || w[k] == '-')) ++k;
+    const std::size_t digits = k;
+    while (k < w.size() && IsDigit(w[k])) ++k;
+    return k > digits && k == w.size();
+}
+
+/// Radiance's isflt(): sign, digits, an optional point and digits (at least
+/// one digit in all), an optional exponent with at least one digit. No
+/// "inf", "nan" or hexadecimal.
+bool IsFloatWord(std::string_view w) {
+    std::size_t k = 0;
+    if (k < w.size() && (w[k] == '+' || w[k] == '-')) ++k;
+    std::size_t digits = 0;
+    while (k < w.size() && IsDigit(w[k])) ++k, ++digits;
+    if (k < w.size() && w[k] == '.') {
+        ++k;
+        while (k < w.size() && IsDigit(w[k])) ++k, ++digits;
+    }
+    if (digits == 0) return false;
+    if (k < w.size() && (w[k] == 'e' || w[k] == 'E')) {
+        ++k;
+        if (k < w.size() && (w[k] == '+' || w[k] == '-')) ++k;
+        const std::size_t start = k;
+        while (k < w.size() && IsDigit(w[k])) ++k;
+        if (k == start) return false;
+    }
+    return k == w.size();
+}
+
+/// The words of a data file as fgetval() sees them: white space separates
+/// them, '#' (anywhere, even inside a word) starts a comment to the end of
+/// the line. Radiance tells "unexpected EOF" from "bad format" by whether its
+/// reads have reached the end of the file (feof), so this tracks that too.
+class WordReader {
+  public:
+    WordReader(std::string_view text, const std::string& path, const std::string& name)
+        : text_(text), path_(path), name_(name) {}
+
+    int ReadInt(const char* what) {
+        const std::string_view w = Next(what);
+        if (!IsIntegerWord(w)) Fail(std::string("expected an integer ") + what, w);
+        // atoi() on glibc: strtol (64-bit long, saturating), then truncated to int.
+        const std::string word(w);
+        const long v = std::strtol(word.c_str(), nullptr, 10);
+        return static_cast<int>(static_cast<unsigned int>(static_cast<unsigned long>(v)));
+    }
+
+    float ReadFloat(const char* what) {
+        const std::string_view w = Next(what);
+        if (!IsFloatWord(w)) Fail(std::string("expected a number ") + what, w);
+        const std::string word(w);
+        return static_cast<float>(std::strtod(word.c_str(), nullptr));
+    }
+
+    /// Radiance's scanerr: "unexpected EOF" once the end has been read, else
+    /// "bad format".
+    [[noreturn]] void Fail(const std::string& detail, std::string_view word = {}) const {
+        std::string message = (atEnd_ ? "unexpected EOF" : "bad format") +
+                              std::string(" in data file \"") + name_ + "\"";
+        if (!atEnd_) {
+            message += ": " + detail;
+            if (!word.empty()) message += ", not \"" + std::string(word.substr(0, 40)) + "\"";
+        }
+        ThrowUserError(FileLoc{path_, wordLine_}, message);
+    }
+
+    int line() const { return line_; }
+
+  private:
+    std::string_view Next(const char* what) {
+        for (;;) {
+            while (pos_ < text_.size() && IsSpace(text_[pos_])) Advance();
+            if (pos_ == text_.size()) break;
+            if (text_[pos_] != '#') {
+                const std::size_t start = pos_;
+                wordLine_ = line_;
+                while (pos_ < text_.size() && !IsSpace(text_[pos_]) && text_[pos_] != '#') {
+                    ++pos_;
+                    if (pos_ - start > kMaxWordLength) {
+                        Fail(std::string("word longer than 63 characters ") + what);
+                    }
+                }
+                if (pos_ == text_.size()) atEnd_ = true;
+                return text_.substr(start, pos_ - start);
+            }
+            while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+        }
+        atEnd_ = true;
+        // The end of the file is on the last line, not after its newline.
+        wordLine_ = std::max(1, line_ - (!text_.empty() && text_.back() == '\n' ? 1 : 0));
+        Fail(std::string("missing ") + what);
+    }
+
+    void Advance() {
+        if (text_[pos_] == '\n') ++line_;
+        ++pos_;
+    }
+
+    std::string_view text_;
+    const std::string& path_;
+    const std::string& name_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int wordLine_ = 1;
+    bool atEnd_ = false;
+};
+
+/// More values than any text can hold: counts whose product reaches this only
+/// end in "unexpected EOF".
+constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 62;
+
+/// C's double-to-int conversion as x86-64 performs it: values out of int's
+/// range (and NaN) give INT_MIN, which datavalue() then clamps to index 0.
+int TruncateToInt(double x) {
+    if (!(x > static_cast<double>(INT_MIN) - 1.0 && x < static_cast<double>(INT_MAX) + 1.0)) {
+        return INT_MIN;
+    }
+    return static_cast<int>(x);
+}
+
+}  // namespace
+
+DataArray::DataArray(std::vector<DataAxis> axes, std::vector<float> values)
+    : axes_(std::move(axes)), values_(std::move(values)), strides_(axes_.size(), 1) {
+    // Every index Value() can form must be inside `values`.
+    std::uint64_t total = 1;
+    bool valid = !axes_.empty() && axes_.size() <= kMaxDataDimensions;
+    for (const DataAxis& a : axes_) {
+        valid = valid && a.count >= 2 &&
+                (a.points.empty() || a.points.size() == static_cast<std::size_t>(a.count)) &&
+                total <= kMaxValues / static_cast<std::uint64_t>(a.count);
+        if (valid) total *= static_cast<std::uint64_t>(a.count);
+    }
+    if (!valid || total != values_.size()) {
+        throw Error(Error::Kind::Internal, "data array of inconsistent size");
+    }
+    for (std::size_t k = axes_.size(); k-- > 1;) {
+        strides_[k - 1] = strides_[k] * static_cast<std::size_t>(axes_[k].count);
+    }
+}
+
+double DataArray::Value(std::span<const double> point) const {
+    return Value(point, 0, 0);
+}
+
+double DataArray::Value(std::span<const double> point, int axis, std::size_t offset) const {
+    const DataAxis& a = axes_[static_cast<std::size_t>(axis)];
+    const double pt = point[static_cast<std::size_t>(axis)];
+    double x;
+    int i;
+    if (a.points.empty()) {
+        x = (pt - a.origin) / a.span;
+        x *= static_cast<double>(a.count - 1);
+        i = TruncateToInt(x);  // toward zero: -0.5 gives 0
+        if (i < 0) {
+            i = 0;
+        } else if (i > a.count - 2) {
+            i = a.count - 2;
+        }
+    } else {
+        // Radiance's bisection, for ascending and descending coordinates.
+        int lower = 0, upper = a.count;
+        if (!(a.span > 0)) std::swap(lower, upper);
+        do {
+            i = (lower + upper) >> 1;
+            if (pt >= a.points[static_cast<std::size_t>(i)]) {
+                lower = i;
+            } else {
+                upper = i;
+            }
+        } while (i != (lower + upper) >> 1);
+        if (i > a.count - 2) i = a.count - 2;
+        const float step = a.points[static_cast<std::size_t>(i) + 1] -
+                           a.points[static_cast<std::size_t>(i)];  // single precision, as Radiance
+        x = i + (pt - a.points[static_cast<std::size_t>(i)]) / step;
+    }
+    const std::size_t stride = strides_[static_cast<std::size_t>(axis)];
+    const std::size_t at0 = offset + static_cast<std::size_t>(i) * stride;
+    double y0, y1;
+    if (axis + 1 < dimensions()) {
+        y0 = Value(point, axis + 1, at0);
+        y1 = Value(point, axis + 1, at0 + stride);
+    } else {
+        y0 = values_[at0];
+        y1 = values_[at0 + 1];
+    }
+    // Linear up to one division beyond the ends, then decaying as 1/distance;
+    // the upper branch is deliberately discontinuous, as Radiance's.
+    if (x > i + 2) return (2 * y1 - y0) / (x - (i - 1));
+    if (x < i - 1) return (2 * y0 - y1) / (i - x);
+    return y0 * ((i + 1) - x) + y1 * (x - i);
+}
+
+DataArray ParseDataFile(std::string_view text, const std::string& path, const std::string& name) {
+    WordReader in(text, path, name);
+    const int dims = in.ReadInt("(number of dimensions)");
+    if (dims <= 0 || dims > kMaxDataDimensions) {
+        ThrowUserError(FileLoc{path, in.line()},
+                       "bad number of dimensions for \"" + name + "\" (" + std::to_string(dims) +
+                           ", must be 1 to 5)");
+    }
+    std::vector<DataAxis> axes(static_cast<std::size_t>(dims));
+    // The number of values, saturating: a hostile count runs out of words
+    // (unexpected EOF) long before anything that size is allocated.
+    std::uint64_t total = 1;
+    for (DataAxis& a : axes) {
+        const float begin = in.ReadFloat("(axis begin)");
+        const float end = in.ReadFloat("(axis end)");
+        a.count = in.ReadInt("(axis point count)");
+        if (a.count < 2) in.Fail("an axis needs at least 2 points");
+        total = total > kMaxValues / static_cast<std::uint64_t>(a.count)
+                    ? kMaxValues
+                    : total * static_cast<std::uint64_t>(a.count);
+        a.origin = begin;
+        a.span = end - begin;  // float arithmetic, as Radiance's `siz -= org`
+        if (a.span == 0) {
+            // Irregular axis: the coordinates follow. Radiance requires each
+            // consecutive pair to go the same way as the next one; equal
+            // neighbours pass that test only in a descending run.
+            for (int j = 0; j < a.count; ++j) a.points.push_back(in.ReadFloat("(axis coordinate)"));
+            for (std::size_t j = 1; j + 1 < a.points.size(); ++j) {
+                if ((a.points[j - 1] < a.points[j]) != (a.points[j] < a.points[j + 1])) {
+                    in.Fail("irregular coordinates not monotonic");
+                }
+            }
+            a.origin = a.points.front();
+            a.span = a.points.back() - a.points.front();
+        }
+    }
+    std::vector<float> values;
+    for (std::uint64_t k = 0; k < total; ++k) values.push_back(in.ReadFloat("(data value)"));
+    return DataArray(std::move(axes), std::move(values));
+}
+
+std::array<std::shared_ptr<const DataArray>, 3> PictureAsData(const Image& image,
+                                                              double pixelAspect) {
+    const int xr = image.width, yr = image.height;
+    DataAxis v, u;
+    v.count = yr;
+    u.count = xr;
+    if (xr <= yr * pixelAspect) {
+        v.span = static_cast<float>(pixelAspect * static_cast<double>(yr) / xr);
+        u.span = 1.0f;
+    } else {
+        v.span = 1.0f;
+        u.span = static_cast<float>(static_cast<double>(xr) / yr / pixelAspect);
+    }
+    std::array<std::vector<float>, 3> channels;
+    for (auto& c : channels) c.resize(image.PixelCount());
+    for (int row = 0; row < yr; ++row) {      // row 0 at the bottom
+        const int y = yr - 1 - row;           // Image: y = 0 is the top row
+        for (int x = 0; x < xr; ++x) {
+            const std::size_t from = 3 * (static_cast<std::size_t>(y) * xr + x);
+            const std::size_t to = static_cast<std::size_t>(row) * xr + x;
+            for (int c = 0; c < 3; ++c) channels[c][to] = image.rgb[from + c];
+        }
+    }
+    std::array<std::shared_ptr<const DataArray>, 3> out;
+    for (int c = 0; c < 3; ++c) {
+        out[c] = std::make_shared<const DataArray>(std::vector<DataAxis>{v, u},
+                                                   std::move(channels[c]));
+    }
+    return out;
+}
+
+std::shared_ptr<const DataArray> DataFileCache::Data(const std::string& name,
+                                                     const std::string& requestedBy) {
+    for (const auto& [key, array] : data_) {
+        if (key == name) return array;
+    }
+    const std::optional<cal::SourceText> file = cal::FindFunctionFile(name, path_);
+    if (!file) {
+        throw Error(Error::Kind::System,
+                    (requestedBy.empty() ? "" : requestedBy + ": ") + "cannot find data file \"" +
+                        name + "\"");
+    }
+    auto array = std::make_shared<const DataArray>(ParseDataFile(file->text, file->name, name));
+    data_.emplace_back(name, array);
+    return array;
+}
+
+std::array<std::shared_ptr<const DataArray>, 3> DataFileCache::Picture(
+    const std::string& name, const std::string& requestedBy) {
+    for (const auto& [key, channels] : pictures_) {
+        if (key == name) return channels;
+    }
+    const std::optional<cal::SourceText> file = cal::FindFunctionFile(name, path_);
+    const std::string prefix = requestedBy.empty() ? "" : requestedBy + ": ";
+    if (!file) {
+        throw Error(Error::Kind::System, prefix + "cannot find picture file \"" + name + "\"");
+    }
+    std::vector<std::string> header;
+    Image image;
+    try {
+        std::istringstream in(file->text);
+        image = ReadHdr(in, file->name, &header);
+    } catch (const Error& e) {
+        ThrowUserError(prefix + "bad picture file \"" + name + "\" (" + e.what() + ")");
+    }
+    // PIXASPECT= lines multiply (Radiance's headaspect()).
+    double aspect = 1.0;
+    for (const std::string& line : header) {
+        if (line.rfind("PIXASPECT=", 0) == 0) aspect *= std::strtod(line.c_str() + 10, nullptr);
+    }
+    if (!(aspect > 1e-6) || image.width <= 0 || image.height <= 0 ||
+        !std::isfinite(aspect)) {
+        ThrowUserError(prefix + "bad picture file \"" + name + "\" (pixel aspect ratio or size)");
+    }
+    auto channels = PictureAsData(image, aspect);
+    pictures_.emplace_back(name, channels);
+    return channels;
+}
+
+std::array<double, 3> EvaluateDataLookup(const DataLookup& lookup, std::span<const double> point,
+                                         const cal::Program& program, cal::Context& context) {
+    std::array<double, 3> interpolated{0, 0, 0};
+    const double vu[2] = {point.size() > 1 ? point[1] : 0.0, point.empty() ? 0.0 : point[0]};
+    const std::span<const double> at = lookup.picture ? std::span<const double>(vu) : point;
+    for (std::size_t k = 0; k < lookup.arrays.size() && k < 3; ++k) {
+        interpolated[k] = lookup.arrays[k]->Value(at);
+    }
+    std::array<double, 3> result{1, 1, 1};
+    for (std::size_t j = 0; j < lookup.functions.size() && j < 3; ++j) {
+        const std::size_t own = lookup.arrays.size() == 1 ? 0 : j;
+        const std::span<const double> args =
+            lookup.argCounts[j] >= 3 ? std::span<const double>(interpolated)
+                                     : std::span<const double>(&interpolated[own], 1);
+        result[j] = program.Call(lookup.functions[j], args, context);
+    }
+    return result;
+}
+
+}  // namespace rt
