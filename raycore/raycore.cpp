@@ -242,21 +242,22 @@ struct RayCore::Impl {
         int bestInstance = -1;
         int bestTriangle = -1;
         Vec3 bestNormal;
+        ExactRay world;  // the caller's ray as an ExactRay
         // The ray in the object space of the instance last asked for: callbacks
         // for one instance come in runs, so it is mapped once per run.
         mutable int mappedInstance = -1;
         mutable ExactRay mapped;
 
-        /// The exact ray in the space of the surfaces under Embree instance
-        /// `instID` (RTC_INVALID_GEOMETRY_ID: the world).
+        /// The exact ray for a callback: the world's, or (kInstanced) the ray
+        /// in the object space of Embree instance `instID`. Callbacks are
+        /// instantiated per kind of Embree scene, so the world's, the hot path,
+        /// pays nothing for instancing.
+        template <bool kInstanced>
         const ExactRay& RayIn(unsigned instID) const {
-            if (instID == RTC_INVALID_GEOMETRY_ID) {
-                if (mappedInstance != -1) {
-                    mapped = ExactRay{org, dir, impl->tolerance, tmax, 1.0};
-                    mappedInstance = -1;
-                }
-                return mapped;
+            if constexpr (!kInstanced) {
+                return world;
             }
+            RT_DCHECK(instID != RTC_INVALID_GEOMETRY_ID);
             const int instance = static_cast<int>(instID - kFirstInstanceGeometry);
             if (instance != mappedInstance) {
                 const InstanceData& in = impl->instances[static_cast<size_t>(instance)];
@@ -269,9 +270,10 @@ struct RayCore::Impl {
             }
             return mapped;
         }
-        int InstanceOf(unsigned instID) const {
-            return instID == RTC_INVALID_GEOMETRY_ID ? -1
-                                                     : static_cast<int>(instID - kFirstInstanceGeometry);
+        template <bool kInstanced>
+        static int InstanceOf(unsigned instID) {
+            if constexpr (!kInstanced) return -1;
+            return static_cast<int>(instID - kFirstInstanceGeometry);
         }
 
         /// Radiance's rule for a new candidate: nearer by more than the
@@ -453,14 +455,22 @@ struct RayCore::Impl {
     /// Shading normal and (u, v) of a hit on a mesh triangle.
     void SetMeshAttributes(Hit& hit) const;
 
+    // kInstanced: the callback runs inside an instance (a prototype's Embree
+    // scene), so its exact ray is mapped into the instance's object space.
+    template <bool kInstanced>
     static void PolygonIntersectFilter(const RTCFilterFunctionNArguments* args);
+    template <bool kInstanced>
     static void PolygonOccludedFilter(const RTCFilterFunctionNArguments* args);
     static void MeshIntersectFilter(const RTCFilterFunctionNArguments* args);
     static void UserBounds(const RTCBoundsFunctionArguments* args);
-    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
+    template <bool kInstanced, typename Shape,
+              std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserIntersect(const RTCIntersectFunctionNArguments* args);
-    template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
+    template <bool kInstanced, typename Shape,
+              std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
+    template <bool kInstanced>
+    void BuildUserKinds(Geometry& geometry, Layer& layer);
 
     /// Whether polygon plane p is a valid candidate for ray r: exact t =
     /// num/denom in (r.tmin, r.tmax). Compared without dividing, because a
@@ -482,6 +492,7 @@ struct RayCore::Impl {
 // N == 1 and the ray/hit pointers are plain RTCRay/RTCRayHit. The instance a
 // callback runs in is the context's instID[0] (invalid in the world).
 
+template <bool kInstanced>
 void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     auto& q = *reinterpret_cast<Query*>(args->context);
@@ -489,10 +500,11 @@ void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* ar
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     const PolygonPlane& plane = quads[hit->primID];
     const unsigned instID = args->context->instID[0];
-    const ExactRay& r = q.RayIn(instID);
+    const ExactRay& r = q.RayIn<kInstanced>(instID);
     double num, denom;
     if (!PlaneCandidate(r, plane, num, denom) ||
-        !q.Offer(num / denom * r.scale, q.InstanceOf(instID), plane.surface, -1, plane.normal)) {
+        !q.Offer(kInstanced ? num / denom * r.scale : num / denom, Query::InstanceOf<kInstanced>(instID),
+                 plane.surface, -1, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
         return;
     }
@@ -506,10 +518,10 @@ void RayCore::Impl::MeshIntersectFilter(const RTCFilterFunctionNArguments* args)
     const auto& planes = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     const PolygonPlane& plane = planes[hit->primID];
     const unsigned instID = args->context->instID[0];
-    const ExactRay& r = q.RayIn(instID);
+    const ExactRay& r = q.RayIn<true>(instID);
     double num, denom;
     if (!PlaneCandidate(r, plane, num, denom) ||
-        !q.Offer(num / denom * r.scale, q.InstanceOf(instID), plane.surface,
+        !q.Offer(num / denom * r.scale, Query::InstanceOf<true>(instID), plane.surface,
                  static_cast<int>(hit->primID), plane.normal)) {
         args->valid[0] = 0;
         return;
@@ -517,13 +529,15 @@ void RayCore::Impl::MeshIntersectFilter(const RTCFilterFunctionNArguments* args)
     reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
 }
 
+template <bool kInstanced>
 void RayCore::Impl::PolygonOccludedFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
     double num, denom;
-    if (!PlaneCandidate(q.RayIn(args->context->instID[0]), quads[hit->primID], num, denom)) {
+    if (!PlaneCandidate(q.RayIn<kInstanced>(args->context->instID[0]), quads[hit->primID], num,
+                        denom)) {
         args->valid[0] = 0;
     }
 }
@@ -533,7 +547,8 @@ void RayCore::Impl::UserBounds(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = kind->bounds[args->primID];
 }
 
-template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
+template <bool kInstanced, typename Shape,
+          std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
 void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     if (!args->valid[0]) return;
@@ -542,10 +557,11 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     const int surface = kind->surfaces[args->primID];
     const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
     const unsigned instID = args->context->instID[0];
-    const ExactRay& r = q.RayIn(instID);
+    const ExactRay& r = q.RayIn<kInstanced>(instID);
     const auto h = Fn(shape, r.org, r.dir, r.tmin);
     if (!h || !(h->t < r.tmax) ||
-        !q.Offer(h->t * r.scale, q.InstanceOf(instID), surface, -1, h->normal)) {
+        !q.Offer(kInstanced ? h->t * r.scale : h->t, Query::InstanceOf<kInstanced>(instID), surface,
+                 -1, h->normal)) {
         return;
     }
     auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
@@ -559,7 +575,8 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     rayhit->hit.instID[0] = instID;
 }
 
-template <typename Shape, std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
+template <bool kInstanced, typename Shape,
+          std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
 void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     if (!args->valid[0]) return;
@@ -567,7 +584,7 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const int surface = kind->surfaces[args->primID];
     const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
-    const ExactRay& r = q.RayIn(args->context->instID[0]);
+    const ExactRay& r = q.RayIn<kInstanced>(args->context->instID[0]);
     const auto h = Fn(shape, r.org, r.dir, r.tmin);
     if (h && h->t < r.tmax) {
         // Embree's convention for "occluded": tfar = -inf.
@@ -752,17 +769,29 @@ void RayCore::Impl::BuildLayer(Layer& layer, Geometry& geometry, const std::vect
         for (const Vec3& v : geometry.mesh->vertices) layer.bounds.Extend(Bounds3{v - padding, v + padding});
     }
     BuildPolygons(layer, geometry, leftOut);
-    BuildUserKind(geometry.spheres, geometry, layer, kSphereGeometry,
-                  &UserIntersect<Sphere, IntersectSphere>, &UserOccluded<Sphere, IntersectSphere>);
-    BuildUserKind(geometry.cones, geometry, layer, kConeGeometry,
-                  &UserIntersect<Cone, IntersectCone>, &UserOccluded<Cone, IntersectCone>);
-    BuildUserKind(geometry.rings, geometry, layer, kRingGeometry,
-                  &UserIntersect<Ring, IntersectRing>, &UserOccluded<Ring, IntersectRing>);
+    if (&geometry == &world) {
+        BuildUserKinds<false>(geometry, layer);
+    } else {
+        BuildUserKinds<true>(geometry, layer);
+    }
     if (geometry.mesh) BuildMesh(layer, geometry);
     if (withInstances) BuildInstances(layer);
 
     rtcCommitScene(layer.rtc);
     Check("rtcCommitScene");
+}
+
+template <bool kInstanced>
+void RayCore::Impl::BuildUserKinds(Geometry& geometry, Layer& layer) {
+    BuildUserKind(geometry.spheres, geometry, layer, kSphereGeometry,
+                  &UserIntersect<kInstanced, Sphere, IntersectSphere>,
+                  &UserOccluded<kInstanced, Sphere, IntersectSphere>);
+    BuildUserKind(geometry.cones, geometry, layer, kConeGeometry,
+                  &UserIntersect<kInstanced, Cone, IntersectCone>,
+                  &UserOccluded<kInstanced, Cone, IntersectCone>);
+    BuildUserKind(geometry.rings, geometry, layer, kRingGeometry,
+                  &UserIntersect<kInstanced, Ring, IntersectRing>,
+                  &UserOccluded<kInstanced, Ring, IntersectRing>);
 }
 
 void RayCore::Impl::BuildPolygons(Layer& layer, const Geometry& geometry,
@@ -806,8 +835,11 @@ void RayCore::Impl::BuildPolygons(Layer& layer, const Geometry& geometry,
     std::copy(vertices.begin(), vertices.end(), vb);
     std::copy(indices.begin(), indices.end(), ib);
     rtcSetGeometryUserData(geom, &layer.quads);
-    rtcSetGeometryIntersectFilterFunction(geom, &PolygonIntersectFilter);
-    rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter);
+    const bool instanced = &geometry != &world;
+    rtcSetGeometryIntersectFilterFunction(
+        geom, instanced ? &PolygonIntersectFilter<true> : &PolygonIntersectFilter<false>);
+    rtcSetGeometryOccludedFilterFunction(
+        geom, instanced ? &PolygonOccludedFilter<true> : &PolygonOccludedFilter<false>);
     AttachGeometry(layer, geom, kPolygonGeometry);
     Check("polygon mesh");
 }
@@ -839,7 +871,7 @@ void RayCore::Impl::BuildMesh(Layer& layer, Geometry& geometry) {
     }
     rtcSetGeometryUserData(geom, &geometry.meshPlanes);
     rtcSetGeometryIntersectFilterFunction(geom, &MeshIntersectFilter);
-    rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter);
+    rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter<true>);
     AttachGeometry(layer, geom, kMeshGeometry);
     Check("triangle mesh");
 }
@@ -935,7 +967,7 @@ RayCore::Impl::Query RayCore::Impl::MakeQuery(const Vec3& org, const Vec3& dir, 
     q.org = org;
     q.dir = dir;
     q.tmax = tmax > 0 ? tmax : kInf;
-    q.mapped = ExactRay{org, dir, tolerance, q.tmax, 1.0};
+    q.world = ExactRay{org, dir, tolerance, q.tmax, 1.0};
     q.mappedInstance = -1;
     // Embree's float distances are off by a few ulps of the largest
     // coordinate in play. The float ray starts `shift` behind the origin so

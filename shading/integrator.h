@@ -198,7 +198,11 @@ private:
     void ShadeMaterial(TracedRay& ray, const Material& m);   // dispatch on type
     /// Multiplies ray.pcol by each pattern of `patterns` (indices into
     /// Scene::patterns), evaluated for this ray (patterns.cpp).
-    void ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns);
+    /// Inline for the common case of no patterns: it runs at every hit.
+    void ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns) {
+        if (!patterns.empty()) ApplyPatternChain(ray, patterns);
+    }
+    void ApplyPatternChain(TracedRay& ray, const std::vector<int>& patterns);
     /// -I: a measuring point lying in the plane of a wall (a sensor on an
     /// edge or in a corner) would send half its sample rays through that
     /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point

@@ -73,8 +73,7 @@ private:
 
 }  // namespace
 
-void Integrator::ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns) {
-    if (patterns.empty()) return;
+void Integrator::ApplyPatternChain(TracedRay& ray, const std::vector<int>& patterns) {
     const cal::Program& functions = *scene_.functions;
     cal::Context& context = *functionContext_;
     for (const int index : patterns) {
