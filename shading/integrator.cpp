@@ -246,6 +246,8 @@ RayResult Integrator::MakeResult(const TracedRay& ray) const {
         r.normal = ray.ron;
         r.geometricNormal = ray.geometricNormal;
         r.surfaceName = s.name;
+        r.u = ray.lu;
+        r.v = ray.lv;
         r.modifierName = s.modifierName;
         r.materialName = s.material >= 0 ? std::string_view(scene_.materials[s.material].name)
                                          : std::string_view("void");

@@ -27,7 +27,7 @@ struct RayResult {
     double weight = 1;          // -ow
     Rgb coefficient{1, 1, 1};   // -oW: product of coefficients up the ray tree
     Rgb contribution;           // -oV: value ⊗ coefficient
-    double u = 0, v = 0;        // -oc: local coordinates (meshes only; always 0 here)
+    double u = 0, v = 0;        // -oc: local (u,v) coordinates: a mesh's, 0 elsewhere
     std::string_view surfaceName = "*";   // -os: hit surface or "*"
     std::string_view modifierName = "*";  // -om: immediate modifier, "void", or "*"
     std::string_view materialName = "*";  // -oM: resolved material, "void", or "*"
