@@ -41,3 +41,6 @@ with open("ref/grid_I_ab2.txt", "w") as f:
         var = max(0.0, s2[i] / n - m[1] * m[1])
         f.write("%.6e %.6e %.6e %.4e\n" % (m[0], m[1], m[2], math.sqrt(var / n) / m[1]))
 PY
+# The frozen octree the demo runs on (scripts/demo.sh), as a daylighting tool
+# makes it.
+oconv -f sky.rad room.rad > df_room.oct
