@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+//
+// Instances in the ray core: a prototype placed by transforms must give the
+// hits that the same surfaces give when transformed into the world (as xform
+// writes them), to double precision, including Radiance's coincidence rule
+// across instances; and the shortcuts for shadow rays (bounding polygons, the
+// light sources' plane) must keep instances as occluders.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "raycore/raycore.h"
+#include "scene/loader.h"
+#include "scene/transform.h"
+
+namespace rt {
+namespace {
+
+// Every surface kind, a transparent polygon coincident with an opaque one
+// (the opaque one must win from both sides), in object coordinates.
+const char* const kMaterials = R"(
+void plastic white 0 0 5 .5 .5 .5 0 0
+void trans clear 0 0 7 .5 .5 .5 0 0 .5 .5
+void light lamp 0 0 3 10 10 10
+)";
+const char* const kObject = R"(
+white polygon floor 0 0 12 0 0 0  1 0 0  1 1 0  0 1 0
+clear polygon film 0 0 12 0 0 0  1 0 0  1 1 0  0 1 0
+white polygon slope 0 0 12 0 0 .2  1 0 .5  1 1 .5  0 1 .2
+white sphere ball 0 0 4 .5 .5 .6 .25
+white cylinder post 0 0 7 .1 .1 0 .1 .1 .9 .05
+white cone spike 0 0 8 .8 .2 0 .8 .2 .7 .15 0
+white ring disc 0 0 8 .3 .8 .3 0 .3 1 .05 .2
+)";
+
+std::vector<SceneObject> Parse(const std::string& text) {
+    std::istringstream in(text);
+    return ReadSceneObjects(in, "t.rad", {}, {});
+}
+
+struct Placement {
+    std::vector<std::string> words;  // transform arguments
+};
+
+const std::vector<Placement> kPlacements = {
+    {{"-rz", "30", "-s", "1.7", "-t", "3", "-2", "1"}},
+    {{"-mx", "-s", "0.5", "-t", "-2", "0", "0"}},
+    {{"-ry", "90", "-rx", "-20", "-t", "1", "4", "2"}},
+};
+
+/// The object placed by kPlacements, as world surfaces (xform's rewriting)
+/// after `extra`.
+Scene WorldScene(const std::string& extra) {
+    std::vector<SceneObject> objects = Parse(std::string(kMaterials) + extra);
+    for (const Placement& p : kPlacements) {
+        XformSettings settings;
+        settings.transform = ParseTransformArgs(p.words).transform;
+        for (const SceneObject& o : Parse(kObject)) objects.push_back(TransformSceneObject(o, settings));
+    }
+    return BuildScene(objects, {});
+}
+
+/// The same, as one prototype and three instances of it.
+Scene InstancedScene(const std::string& extra) {
+    Scene scene = BuildScene(Parse(std::string(kMaterials) + extra), {});
+    const Scene object = BuildScene(Parse(std::string(kMaterials) + kObject), {});
+    Prototype prototype;
+    prototype.file = "object";
+    prototype.surfaces = object.surfaces;
+    prototype.cubeOrigin = object.cubeOrigin;
+    prototype.cubeSize = object.cubeSize;
+    scene.prototypes.push_back(prototype);
+    for (const Placement& p : kPlacements) {
+        Instance instance;
+        instance.prototype = 0;
+        instance.renderFromObject = ParseTransformArgs(p.words).transform;
+        instance.renderFromObject.scale = std::fabs(instance.renderFromObject.scale);
+        instance.objectFromRender = Inverse(instance.renderFromObject);
+        scene.instances.push_back(instance);
+    }
+    scene.cubeSize = 0;  // bounds from the geometry, as for hand-built scenes
+    return scene;
+}
+
+Vec3 RandomDirection(std::mt19937& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d{n(rng), n(rng), n(rng)};
+        if (LengthSquared(d) > 1e-6) return Normalize(d);
+    }
+}
+
+TEST(Instances, HitsEqualTheSurfacesTransformedIntoTheWorld) {
+    const Scene world = WorldScene("");
+    const Scene instanced = InstancedScene("");
+    const RayCore worldCore(world), instancedCore(instanced);
+    const std::size_t perInstance = world.surfaces.size() / kPlacements.size();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> pos(-4, 6), unit(0, 1);
+    int hits = 0, filmHits = 0;
+    for (int i = 0; i < 30000; ++i) {
+        // Half the rays start on a surface, as reflected and shadow rays do;
+        // most aim at a point of one placement's cube.
+        Vec3 org{pos(rng), pos(rng), pos(rng)};
+        if (i % 2 == 1) {
+            if (const auto h = worldCore.Intersect(org, RandomDirection(rng), 0)) org = h->point;
+        }
+        Vec3 dir = RandomDirection(rng);
+        if (i % 4 != 0) {
+            const Instance& in = instanced.instances[static_cast<std::size_t>(i) % kPlacements.size()];
+            const Vec3 target = in.renderFromObject.Point({unit(rng), unit(rng), unit(rng)});
+            if (LengthSquared(target - org) > 1e-12) dir = Normalize(target - org);
+        }
+        const auto w = worldCore.Intersect(org, dir, 0);
+        const auto h = instancedCore.Intersect(org, dir, 0);
+        ASSERT_EQ(w.has_value(), h.has_value()) << org << " " << dir;
+        EXPECT_EQ(worldCore.Occluded(org, dir, 0), w.has_value());
+        EXPECT_EQ(instancedCore.Occluded(org, dir, 0), h.has_value());
+        if (!w) continue;
+        ++hits;
+        // The same surface of the same placement: world surfaces are
+        // placement-major, like the instances.
+        ASSERT_GE(h->instance, 0);
+        EXPECT_EQ(static_cast<std::size_t>(w->surface),
+                  static_cast<std::size_t>(h->instance) * perInstance + static_cast<std::size_t>(h->surface))
+            << org << " " << dir;
+        const Surface& ws = world.surfaces[static_cast<std::size_t>(w->surface)];
+        const Surface& hs = instanced.HitSurface(h->instance, h->surface);
+        EXPECT_EQ(ws.name, hs.name);
+        EXPECT_EQ(ws.material, hs.material);
+        filmHits += hs.name == "film";
+        const double scale = std::max(1.0, std::fabs(w->t));
+        EXPECT_NEAR(h->t, w->t, 1e-9 * scale);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(h->point[k], w->point[k], 1e-9 * scale);
+            EXPECT_NEAR(h->normal[k], w->normal[k], 1e-9);
+        }
+        EXPECT_EQ(h->shadingNormal, h->normal);
+    }
+    EXPECT_GT(hits, 10000);
+    EXPECT_EQ(filmHits, 0);  // the opaque floor always wins over the coincident film
+}
+
+/// Inside a closed room with a lamp, shadow rays go to the layers without the
+/// walls (and without the lamp's plane): the instances must still block them.
+TEST(Instances, ShadowShortcutsKeepInstancesAsOccluders) {
+    const std::string room = R"(
+white polygon rfloor 0 0 12 -5 -5 -1  9 -5 -1  9 9 -1  -5 9 -1
+white polygon rceil 0 0 12 -5 -5 7  -5 9 7  9 9 7  9 -5 7
+white polygon rw1 0 0 12 -5 -5 -1  -5 9 -1  -5 9 7  -5 -5 7
+white polygon rw2 0 0 12 9 -5 -1  9 -5 7  9 9 7  9 9 -1
+white polygon rw3 0 0 12 -5 -5 -1  -5 -5 7  9 -5 7  9 -5 -1
+white polygon rw4 0 0 12 -5 9 -1  9 9 -1  9 9 7  -5 9 7
+lamp polygon panel 0 0 12 0 0 6.99  0 2 6.99  2 2 6.99  2 0 6.99
+)";
+    const Scene instanced = InstancedScene(room);
+    const RayCore core(instanced);
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> x(-4.9, 8.9), z(-0.9, 6.9), u(0, 1);
+    int blocked = 0, checked = 0;
+    for (int i = 0; i < 30000; ++i) {
+        // From points near the placements, to the lamp or to other points.
+        const Instance& in = instanced.instances[static_cast<std::size_t>(i) % kPlacements.size()];
+        const Vec3 near = in.renderFromObject.Point({u(rng), u(rng), u(rng)});
+        const Vec3 a = i % 3 ? near + RandomDirection(rng) * (2 * u(rng)) : Vec3{x(rng), x(rng), z(rng)};
+        if (std::fabs(a.x - 2) > 6.9 || std::fabs(a.y - 2) > 6.9 || std::fabs(a.z - 3) > 3.9) continue;
+        const Vec3 b = i % 2 ? Vec3{2 * u(rng), 2 * u(rng), 6.98} : Vec3{x(rng), x(rng), z(rng)};
+        const double length = Length(b - a);
+        if (length < 1e-6) continue;
+        const Vec3 dir = (b - a) / length;
+        const bool expected = core.Intersect(a, dir, length).has_value();
+        EXPECT_EQ(core.Occluded(a, dir, length), expected) << a << " -> " << b;
+        ++checked;
+        blocked += expected;
+    }
+    EXPECT_GT(checked, 20000);
+    EXPECT_GT(blocked, 2000);
+}
+
+}  // namespace
+}  // namespace rt
