@@ -361,7 +361,17 @@ TEST(GoldenInstance, BadInstancesAreOneLineErrors) {
         ASSERT_GT(bytes.size(), 700u);
         std::ofstream(truncated, std::ios::binary) << bytes.substr(0, 700);
     }
+    const std::string truncatedMesh = dir + "/truncated_tri.rtm";
+    {
+        std::ifstream in(kSource + "/tests/data/mesh/tri.rtm", std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        ASSERT_GT(bytes.size(), 500u);
+        std::ofstream(truncatedMesh, std::ios::binary) << bytes.substr(0, 500);
+    }
     const std::vector<Case> cases = {
+        {"void mesh x 1 nothere.rtm 0 0", 2, "bad.rad:1: cannot find mesh file \"nothere.rtm\""},
+        {"void mesh x 1 square.oct 0 0", 1, "square.oct: byte 52: incompatible mesh format"},
+        {"void mesh x 1 " + truncatedMesh + " 0 0", 1, truncatedMesh + ": byte 500: truncated mesh file"},
         {"void instance x 1 nothere.oct 0 0", 2, "bad.rad:1: cannot find octree file \"nothere.oct\""},
         {"void instance me 1 self.oct 0 0", 1, "self.rad:1: instance \"me\": octree \"self.oct\" includes itself"},
         {"void instance x 3 square.oct -t 1 0 0", 1, "bad.rad:1: instance \"x\": bad transform"},
