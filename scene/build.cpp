@@ -83,16 +83,24 @@ struct ModifierDef {
     int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
 };
 
-/// The pattern types lazyrad evaluates, with where their string arguments
-/// put the function file: brightfunc `v file [xf]`, colorfunc `r g b file [xf]`.
+/// The function modifiers lazyrad evaluates, with the layout of their string
+/// arguments (radiance-functions.md §11.2): `names` modifier names, then
+/// `expressions` expressions, then the function file, then [xf].
+/// brightfunc `v file`, colorfunc `r g b file`, texfunc `dx dy dz file`,
+/// mixfunc `fore back c file`. texdata, mixdata etc. take function names and
+/// data files between these and add rows here.
 struct PatternSpec {
     const char* name;
     PatternType type;
+    ModifierKind kind;
+    int names;
     int expressions;
 };
 constexpr PatternSpec kPatternSpecs[] = {
-    {"brightfunc", PatternType::BrightFunc, 1},
-    {"colorfunc", PatternType::ColorFunc, 3},
+    {"brightfunc", PatternType::BrightFunc, ModifierKind::Pattern, 0, 1},
+    {"colorfunc", PatternType::ColorFunc, ModifierKind::Pattern, 0, 3},
+    {"texfunc", PatternType::TexFunc, ModifierKind::Texture, 0, 3},
+    {"mixfunc", PatternType::MixFunc, ModifierKind::Mixture, 2, 1},
 };
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
@@ -100,6 +108,13 @@ const PatternSpec* FindPatternSpec(const std::string& type) {
         if (type == spec.name) return &spec;
     }
     return nullptr;
+}
+
+const char* PatternTypeName(PatternType type) {
+    for (const PatternSpec& spec : kPatternSpecs) {
+        if (spec.type == type) return spec.name;
+    }
+    return "unknown";
 }
 
 class SceneBuilder {
@@ -180,6 +195,7 @@ private:
             Pattern copy = scene_.patterns[static_cast<std::size_t>(target.pattern)];
             copy.name = object.name;
             copy.loc = object.loc;
+            CheckMixtureModifier(object, copy, modifier);
             scene_.patterns.push_back(std::move(copy));
             Define(object.name,
                    ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
@@ -207,9 +223,56 @@ private:
                                    PrintableWord(scene_.materials[static_cast<std::size_t>(m.material)].name) +
                                    "\" in the modifiers of " + Describe(object));
             }
+            // A mixture that shades with a material is one too (raytexture()).
+            const Pattern& p = scene_.patterns[static_cast<std::size_t>(m.pattern)];
+            if (p.kind == ModifierKind::Mixture && ReachesMaterial(p)) {
+                ThrowUserError(object.loc, "conflicting material \"" + PrintableWord(p.name) +
+                                               "\" in the modifiers of " + Describe(object));
+            }
             patterns.push_back(m.pattern);
         }
         return patterns;
+    }
+
+    /// The chain rayshade() walks from definition `def` on (-1: void, an
+    /// empty chain): modifiers until the first material.
+    ModifierChain ChainFrom(int def) const {
+        ModifierChain chain;
+        for (int d = def; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
+            const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
+            if (m.material >= 0) {
+                chain.material = m.material;
+                break;
+            }
+            chain.modifiers.push_back(m.pattern);
+        }
+        return chain;
+    }
+
+    /// Whether shading `mixture` can end at a material on either side (else
+    /// it only ever acts as a pattern/texture, §11.9).
+    bool ReachesMaterial(const Pattern& mixture) const {
+        for (const ModifierChain* chain : {&mixture.fore, &mixture.back}) {
+            if (chain->material >= 0) return true;
+            for (const int index : chain->modifiers) {
+                const Pattern& p = scene_.patterns[static_cast<std::size_t>(index)];
+                if (p.kind == ModifierKind::Mixture && ReachesMaterial(p)) return true;
+            }
+        }
+        return false;
+    }
+
+    /// A mixture that shades with materials ends the chain, so it must have
+    /// no modifier of its own (Radiance checks when it first reaches one;
+    /// here at load).
+    void CheckMixtureModifier(const SceneObject& object, const Pattern& pattern,
+                              int modifier) const {
+        if (pattern.kind == ModifierKind::Mixture && modifier != -1 && ReachesMaterial(pattern)) {
+            // Named by its type even when it is an alias's copy, as Radiance does.
+            ThrowUserError(object.loc, std::string("inappropriate modifier for ") +
+                                           PatternTypeName(pattern.type) + " \"" +
+                                           PrintableWord(object.name) + "\"");
+        }
     }
 
     /// The function language, set up at the first pattern: rtrace's ray
@@ -226,11 +289,13 @@ private:
     void AddPattern(const SceneObject& object) {
         const PatternSpec& spec = *FindPatternSpec(object.type);
         const auto& words = object.sargs;
-        const std::size_t fileAt = static_cast<std::size_t>(spec.expressions);
+        const std::size_t firstExpression = static_cast<std::size_t>(spec.names);
+        const std::size_t fileAt = firstExpression + static_cast<std::size_t>(spec.expressions);
         if (words.size() < fileAt + 1) BadArgs(object);
         Pattern pattern;
         pattern.name = object.name;
         pattern.type = spec.type;
+        pattern.kind = spec.kind;
         pattern.owner = Describe(object);
         pattern.args = object.rargs;
         pattern.loc = object.loc;
@@ -243,19 +308,36 @@ private:
             if (xf.next != words.size()) {
                 ThrowUserError(object.loc, "bad transform for " + Describe(object));
             }
+            pattern.worldFromPattern = xf.transform;
+            pattern.worldFromPattern.scale = std::fabs(pattern.worldFromPattern.scale);
             pattern.patternFromWorld = Inverse(xf.transform);
             pattern.patternFromWorld.scale = std::fabs(pattern.patternFromWorld.scale);
+        }
+        if (spec.kind == ModifierKind::Mixture) {
+            // Each side is the last definition of its name before the
+            // mixture (lastmod()), or void.
+            ModifierChain* sides[2] = {&pattern.fore, &pattern.back};
+            for (std::size_t k = 0; k < 2; ++k) {
+                if (words[k] == "void") continue;
+                const auto def = Lookup(words[k]);
+                if (!def) {
+                    ThrowUserError(object.loc, "undefined modifier \"" + PrintableWord(words[k]) +
+                                                   "\" for " + Describe(object));
+                }
+                *sides[k] = ChainFrom(*def);
+            }
         }
         cal::Program& functions = Functions();
         const std::string where = object.loc.ToString();
         const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
-        for (std::size_t k = 0; k < fileAt; ++k) {
+        for (std::size_t k = firstExpression; k < fileAt; ++k) {
             pattern.values.push_back(
                 functions.CompileExpression(words[k], where + ": " + pattern.owner, context));
         }
+        const int modifier = ResolveModifier(object);
+        CheckMixtureModifier(object, pattern, modifier);
         scene_.patterns.push_back(std::move(pattern));
-        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1,
-                                        ResolveModifier(object)});
+        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
     }
 
     void AddMaterial(const SceneObject& object) {
@@ -273,6 +355,7 @@ private:
         material.name = object.name;
         material.type = spec->type;
         material.args = object.rargs;
+        material.params = MakeMaterialParams(spec->type, material.args);
         material.loc = object.loc;
         if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);

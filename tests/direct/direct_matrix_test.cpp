@@ -10,7 +10,12 @@
 //   colorfunc with every ray quantity and transforms, modifier chains and
 //   aliases, patterned light sources, gensky and gendaylit skies, errors),
 //   answers in tests/data/patterns/expected.txt. lazyrad runs with RAYPATH
-//   unset, so its own lib/ function files stand in for Radiance's.
+//   unset, so its own lib/ function files stand in for Radiance's;
+// - textures and mixtures (tests/direct/generate_textures.py: texfunc on
+//   every material using the perturbed normal, with transforms and chains;
+//   mixfunc of materials, void, patterns, textures and mixtures, seen by
+//   primary and shadow rays and as light sources; -ab 1; errors), answers in
+//   tests/data/textures/expected.txt.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -118,6 +123,7 @@ const std::vector<MatrixRun>& Matrix() {
     static const std::vector<MatrixRun> runs = [] {
         std::vector<MatrixRun> all = LoadMatrix("direct");
         for (MatrixRun& r : LoadMatrix("patterns")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("textures")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -304,6 +310,8 @@ void PrintTo(const Group& g, std::ostream* os) { *os << g.dataset << "/" << g.na
 INSTANTIATE_TEST_SUITE_P(Sources, DirectMatrix, ::testing::ValuesIn(Groups("direct")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Patterns, DirectMatrix, ::testing::ValuesIn(Groups("patterns")),
                          GroupName);
+INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("textures")),
+                         GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -328,6 +336,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Matrix().size(), 1600u);
     EXPECT_GE(Groups("direct").size(), 60u);
     EXPECT_GE(Groups("patterns").size(), 6u);
+    EXPECT_GE(Groups("textures").size(), 8u);
 }
 
 }  // namespace
