@@ -88,27 +88,32 @@ struct ModifierDef {
     int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
 };
 
-/// The pattern types lazyrad evaluates and the layout of their string
-/// arguments (radiance-functions.md §11.2): `functions` function names, then
-/// `dataFiles` data files or a picture, then the function file, then the
-/// expressions (-1: as many as the first data file has dimensions), then an
-/// optional transform. brightfunc `v file`, colorfunc `r g b file`,
-/// brightdata `f data file x1…xn`, colordata `fr fg fb dr dg db file x1…xn`,
-/// colorpict `fr fg fb pict file u v`.
+/// The function modifiers lazyrad evaluates and the layout of their string
+/// arguments (radiance-functions.md §11.2): `names` modifier names (mixfunc's
+/// fore and back), `functions` function names, then `dataFiles` data files or
+/// a picture, then the function file, then the expressions (-1: as many as the
+/// first data file has dimensions), then an optional transform.
+/// brightfunc `v file`, colorfunc `r g b file`, texfunc `dx dy dz file`,
+/// mixfunc `fore back c file`, brightdata `f data file x1…xn`, colordata
+/// `fr fg fb dr dg db file x1…xn`, colorpict `fr fg fb pict file u v`.
 struct PatternSpec {
     const char* name;
     PatternType type;
+    ModifierKind kind;
+    int names;
     int expressions;
     int functions = 0;
     int dataFiles = 0;
     bool picture = false;
 };
 constexpr PatternSpec kPatternSpecs[] = {
-    {"brightfunc", PatternType::BrightFunc, 1},
-    {"colorfunc", PatternType::ColorFunc, 3},
-    {"brightdata", PatternType::BrightData, -1, 1, 1},
-    {"colordata", PatternType::ColorData, -1, 3, 3},
-    {"colorpict", PatternType::ColorPict, 2, 3, 1, true},
+    {"brightfunc", PatternType::BrightFunc, ModifierKind::Pattern, 0, 1},
+    {"colorfunc", PatternType::ColorFunc, ModifierKind::Pattern, 0, 3},
+    {"texfunc", PatternType::TexFunc, ModifierKind::Texture, 0, 3},
+    {"mixfunc", PatternType::MixFunc, ModifierKind::Mixture, 2, 1},
+    {"brightdata", PatternType::BrightData, ModifierKind::Pattern, 0, -1, 1, 1},
+    {"colordata", PatternType::ColorData, ModifierKind::Pattern, 0, -1, 3, 3},
+    {"colorpict", PatternType::ColorPict, ModifierKind::Pattern, 0, 2, 3, 1, true},
 };
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
@@ -116,6 +121,13 @@ const PatternSpec* FindPatternSpec(const std::string& type) {
         if (type == spec.name) return &spec;
     }
     return nullptr;
+}
+
+const char* PatternTypeName(PatternType type) {
+    for (const PatternSpec& spec : kPatternSpecs) {
+        if (spec.type == type) return spec.name;
+    }
+    return "unknown";
 }
 
 /// An `instance` or `mesh` primitive as written, in the space of the scene
@@ -233,6 +245,7 @@ private:
             Pattern copy = scene_.patterns[static_cast<std::size_t>(target.pattern)];
             copy.name = object.name;
             copy.loc = object.loc;
+            CheckMixtureModifier(object, copy, modifier);
             scene_.patterns.push_back(std::move(copy));
             Define(object.name,
                    ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
@@ -260,9 +273,56 @@ private:
                                    PrintableWord(scene_.materials[static_cast<std::size_t>(m.material)].name) +
                                    "\" in the modifiers of " + Describe(object));
             }
+            // A mixture that shades with a material is one too (raytexture()).
+            const Pattern& p = scene_.patterns[static_cast<std::size_t>(m.pattern)];
+            if (p.kind == ModifierKind::Mixture && ReachesMaterial(p)) {
+                ThrowUserError(object.loc, "conflicting material \"" + PrintableWord(p.name) +
+                                               "\" in the modifiers of " + Describe(object));
+            }
             patterns.push_back(m.pattern);
         }
         return patterns;
+    }
+
+    /// The chain rayshade() walks from definition `def` on (-1: void, an
+    /// empty chain): modifiers until the first material.
+    ModifierChain ChainFrom(int def) const {
+        ModifierChain chain;
+        for (int d = def; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
+            const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
+            if (m.material >= 0) {
+                chain.material = m.material;
+                break;
+            }
+            chain.modifiers.push_back(m.pattern);
+        }
+        return chain;
+    }
+
+    /// Whether shading `mixture` can end at a material on either side (else
+    /// it only ever acts as a pattern/texture, §11.9).
+    bool ReachesMaterial(const Pattern& mixture) const {
+        for (const ModifierChain* chain : {&mixture.fore, &mixture.back}) {
+            if (chain->material >= 0) return true;
+            for (const int index : chain->modifiers) {
+                const Pattern& p = scene_.patterns[static_cast<std::size_t>(index)];
+                if (p.kind == ModifierKind::Mixture && ReachesMaterial(p)) return true;
+            }
+        }
+        return false;
+    }
+
+    /// A mixture that shades with materials ends the chain, so it must have
+    /// no modifier of its own (Radiance checks when it first reaches one;
+    /// here at load).
+    void CheckMixtureModifier(const SceneObject& object, const Pattern& pattern,
+                              int modifier) const {
+        if (pattern.kind == ModifierKind::Mixture && modifier != -1 && ReachesMaterial(pattern)) {
+            // Named by its type even when it is an alias's copy, as Radiance does.
+            ThrowUserError(object.loc, std::string("inappropriate modifier for ") +
+                                           PatternTypeName(pattern.type) + " \"" +
+                                           PrintableWord(object.name) + "\"");
+        }
     }
 
     /// The function language, set up at the first pattern: rtrace's ray
@@ -283,14 +343,16 @@ private:
         Pattern pattern;
         pattern.name = object.name;
         pattern.type = spec.type;
+        pattern.kind = spec.kind;
         pattern.owner = Describe(object);
         pattern.args = object.rargs;
         pattern.loc = object.loc;
         std::size_t expressions = static_cast<std::size_t>(std::max(spec.expressions, 0));
         const bool hasData = spec.functions > 0;
+        const std::size_t names = static_cast<std::size_t>(spec.names);
         const std::size_t fileAt =
-            hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : expressions;
-        std::size_t exprAt = 0;
+            hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : names + expressions;
+        std::size_t exprAt = names;
         if (!hasData) {
             if (words.size() < fileAt + 1) BadArgs(object);
         } else {
@@ -317,8 +379,24 @@ private:
             if (xf.next != words.size()) {
                 ThrowUserError(object.loc, "bad transform for " + Describe(object));
             }
+            pattern.worldFromPattern = xf.transform;
+            pattern.worldFromPattern.scale = std::fabs(pattern.worldFromPattern.scale);
             pattern.patternFromWorld = Inverse(xf.transform);
             pattern.patternFromWorld.scale = std::fabs(pattern.patternFromWorld.scale);
+        }
+        if (spec.kind == ModifierKind::Mixture) {
+            // Each side is the last definition of its name before the
+            // mixture (lastmod()), or void.
+            ModifierChain* sides[2] = {&pattern.fore, &pattern.back};
+            for (std::size_t k = 0; k < 2; ++k) {
+                if (words[k] == "void") continue;
+                const auto def = Lookup(words[k]);
+                if (!def) {
+                    ThrowUserError(object.loc, "undefined modifier \"" + PrintableWord(words[k]) +
+                                                   "\" for " + Describe(object));
+                }
+                *sides[k] = ChainFrom(*def);
+            }
         }
         cal::Program& functions = Functions();
         const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
@@ -339,9 +417,10 @@ private:
             pattern.data.argCounts.push_back(
                 spec.functions == 3 && functions.Arity(*f) >= 3 ? 3 : 1);
         }
+        const int modifier = ResolveModifier(object);
+        CheckMixtureModifier(object, pattern, modifier);
         scene_.patterns.push_back(std::move(pattern));
-        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1,
-                                        ResolveModifier(object)});
+        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
     }
 
     /// The data files (sargs after the function names) or the picture of a
@@ -378,6 +457,7 @@ private:
         material.name = object.name;
         material.type = spec->type;
         material.args = object.rargs;
+        material.params = MakeMaterialParams(spec->type, material.args);
         material.loc = object.loc;
         if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);

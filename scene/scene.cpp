@@ -35,6 +35,44 @@ const char* MaterialTypeName(MaterialType type) {
     return "unknown";
 }
 
+const char* SurfaceTypeName(SurfaceType type) {
+    switch (type) {
+        case SurfaceType::Polygon: return "polygon";
+        case SurfaceType::Sphere: return "sphere";
+        case SurfaceType::Bubble: return "bubble";
+        case SurfaceType::Cone: return "cone";
+        case SurfaceType::Cup: return "cup";
+        case SurfaceType::Cylinder: return "cylinder";
+        case SurfaceType::Tube: return "tube";
+        case SurfaceType::Ring: return "ring";
+        case SurfaceType::Source: return "source";
+        case SurfaceType::Instance: return "instance";
+        case SurfaceType::Mesh: return "polygon";  // Radiance's mesh triangles are faces
+    }
+    return "unknown";
+}
+
+MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& a) {
+    const Rgb color(a[0], a[1], a[2]);
+    switch (type) {
+        case MaterialType::Plastic:
+        case MaterialType::Metal: return NormalParams{color, a[3], a[4], 0, 0};
+        case MaterialType::Trans: return NormalParams{color, a[3], a[4], a[5], a[6]};
+        case MaterialType::Light:
+        case MaterialType::Illum: return LightParams{color, 0, 0, Vec3()};
+        case MaterialType::Glow: return LightParams{color, a[3], 0, Vec3()};
+        case MaterialType::Spotlight: return LightParams{color, 0, a[3], Vec3(a[4], a[5], a[6])};
+        case MaterialType::Mirror: return MirrorParams{color};
+        case MaterialType::Glass: return GlassParams{color, a.size() > 3 ? a[3] : 1.52};
+        case MaterialType::Dielectric:
+            // Radiance's MLAMBDA: the Hartmann constant is given for 500 nm.
+            return DielectricParams{color, a[3] + a[4] / 500.0, Rgb(1, 1, 1), 1.0};
+        case MaterialType::Interface:
+            return DielectricParams{color, a[3], Rgb(a[4], a[5], a[6]), a[7]};
+    }
+    return NormalParams{};
+}
+
 bool IsTransparentType(MaterialType type) {
     return type == MaterialType::Trans || type == MaterialType::Glass ||
            type == MaterialType::Dielectric || type == MaterialType::Interface;

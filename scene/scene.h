@@ -4,13 +4,14 @@
 // resolved, and the materials they refer to (radiance-notes.md §2.3–2.8).
 // Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
 //
-// Only what lazyrad can shade is represented: materials and the patterns
-// brightfunc, colorfunc, brightdata, colordata and colorpict. A scene using
-// any other modifier type is rejected at load time with
-// "file:line: unsupported material type 'X'".
+// Only what lazyrad can shade is represented: materials, the patterns
+// brightfunc, colorfunc, brightdata, colordata and colorpict, the texture
+// texfunc and the mixture mixfunc. A scene using any other modifier type is
+// rejected at load time with "file:line: unsupported material type 'X'".
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "core/affine.h"
 #include "core/conventions.h"
 #include "core/error.h"
+#include "core/rgb.h"
 #include "core/vecmath.h"
 #include "scene/data_file.h"
 
@@ -38,9 +40,51 @@ struct SceneObject {
     FileLoc loc;                        // where the primitive starts
 };
 
+/// Shading looks materials up in tables indexed by this (shading/materials.cpp).
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface
 };
+inline constexpr std::size_t kMaterialTypeCount = 11;
+
+// Each material's real arguments by name, read once at load time
+// (radiance-notes.md §2.6). Colours are reflectances or transmittances in
+// [0, 1] per channel, except light colours: radiance in W·sr⁻¹·m⁻².
+
+/// plastic, metal (5 reals) and trans (7 reals), normal.c.
+struct NormalParams {
+    Rgb color;
+    double specularity = 0;          // fraction of light reflected specularly
+    double roughness = 0;            // RMS facet slope, 0 = polished
+    double transmissivity = 0;       // trans: fraction of the non-specular part transmitted
+    double transmittedSpecular = 0;  // trans: fraction of the transmitted part passed unscattered
+};
+/// light, illum, glow, spotlight.
+struct LightParams {
+    Rgb color;                       // emitted radiance
+    double radius = 0;               // glow: maximum radius of influence (scene units)
+    double coneAngleDegrees = 0;     // spotlight: full cone angle
+    Vec3 aim;                        // spotlight: focus direction, not unit
+};
+struct MirrorParams {
+    Rgb color;                       // reflectance
+};
+struct GlassParams {
+    Rgb color;                       // transmissivity at normal incidence
+    double index = 1.52;             // refractive index
+};
+/// dielectric (index n + Hartmann constant / 500 nm, outside vacuum) and interface.
+struct DielectricParams {
+    Rgb insideColor;                 // transmission per unit length inside
+    double insideIndex = 1;
+    Rgb outsideColor{1, 1, 1};       // interface only
+    double outsideIndex = 1;
+};
+using MaterialParams =
+    std::variant<NormalParams, LightParams, MirrorParams, GlassParams, DielectricParams>;
+
+/// The named parameters of a material of `type` from its real arguments, whose
+/// count the caller has checked against radiance-notes.md §2.6.
+MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& args);
 
 /// A material. Argument counts are validated at load time against
 /// radiance-notes.md §2.6.
@@ -48,30 +92,57 @@ struct Material {
     std::string name;           // identifier; for an alias with its own modifier, the alias name
     MaterialType type;
     std::vector<double> args;   // real arguments as written
+    MaterialParams params;      // the same, named: what shading reads
     int alternate = -1;         // illum/mirror alternate material (index), -1 for none or void
-    /// The patterns of the material's own modifier chain (Radiance's
+    /// The modifiers of the material's own chain (Radiance's
     /// raytexture(m->omod)), indices into Scene::patterns in chain order.
+    /// Mixtures on it never reach a material ("conflicting material").
     std::vector<int> patterns;
     FileLoc loc;
 };
 
-enum class PatternType { BrightFunc, ColorFunc, BrightData, ColorData, ColorPict };
+enum class PatternType { BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, MixFunc };
 
-/// A pattern (radiance-functions.md §11.2, §11.4, §11.5, §11.7):
-/// function-language expressions evaluated at each hit in the pattern's own
-/// space, multiplying the ray's pattern colour; for the *data and *pict types
-/// they are coordinates in data looked up and mapped by named functions.
+/// What a function modifier does to a ray (radiance-functions.md §11.1).
+enum class ModifierKind {
+    Pattern,  // multiplies the pattern colour pcol
+    Texture,  // adds to the normal perturbation pert
+    Mixture,  // shades the ray with two chains and blends them (§11.9)
+};
+
+/// A modifier chain from one modifier on, as Radiance's rayshade() walks it:
+/// patterns, textures and mixtures in order, then the material ending it.
+struct ModifierChain {
+    std::vector<int> modifiers;  // indices into Scene::patterns, in chain order
+    int material = -1;           // index into Scene::materials; -1: none (void)
+};
+
+/// A function modifier (radiance-functions.md §11.2, §11.4, §11.8, §11.9):
+/// function-language expressions evaluated at each hit in the modifier's own
+/// space. A pattern multiplies the ray's pattern colour, a texture adds a
+/// displacement to its normal perturbation, a mixture blends two chains; for
+/// the *data and *pict patterns (§11.5, §11.7) the expressions are
+/// coordinates in data looked up and mapped by named functions.
 /// Compiled into Scene::functions at load time.
 struct Pattern {
     std::string name;
     PatternType type;
+    ModifierKind kind = ModifierKind::Pattern;
     std::string owner;                    // `brightfunc "name"`, for messages
-    std::vector<cal::Expression> values;  // brightfunc: 1, colorfunc: r g b; else coordinates
+    /// brightfunc: 1, colorfunc: r g b, texfunc: dx dy dz, mixfunc: the
+    /// coefficient of `fore`; *data, *pict: the data coordinates.
+    std::vector<cal::Expression> values;
     DataLookup data;                      // *data, *pict: the arrays and functions; empty otherwise
     std::vector<double> args;             // real arguments: arg(n), A1, …
     /// World to pattern space (the inverse of the transform arguments, §10.1);
     /// its scale is the positive factor S (mirrors do not make it negative).
     Transform patternFromWorld;
+    /// The transform arguments themselves, pattern to world space (textures
+    /// turn their displacement with it), scale positive as above.
+    Transform worldFromPattern;
+    /// mixfunc: the chains from its `fore` and `back` modifiers as defined
+    /// before the mixture (empty for void).
+    ModifierChain fore, back;
     FileLoc loc;
 };
 
@@ -126,14 +197,18 @@ struct DistantSource {
 /// §13.2, §13.4). Their shape is an empty Polygon.
 enum class SurfaceType { Polygon, Sphere, Bubble, Cone, Cup, Cylinder, Tube, Ring, Source, Instance, Mesh };
 
+/// Radiance's type name ("polygon", ...), for messages about a surface.
+const char* SurfaceTypeName(SurfaceType type);
+
 struct Surface {
     std::string name;
     SurfaceType type;
     std::string modifierName;   // immediate modifier as written ("void" if none) — rtrace -om
     int material = -1;          // index into Scene::materials after aliases; -1 for void
-    /// Patterns between the surface and its material (a chain such as
+    /// Modifiers between the surface and its material (a chain such as
     /// `m light l; l brightfunc b; b polygon p`), indices into Scene::patterns;
-    /// the material's own chain is Material::patterns.
+    /// the material's own chain is Material::patterns. A mixture that can
+    /// reach a material ends the chain (`material` is then -1).
     std::vector<int> patterns;
     std::variant<Polygon, Sphere, Cone, Ring, DistantSource> shape;
     FileLoc loc;

@@ -77,8 +77,9 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
         sray.SetHit(*hit, scene_.PatternSpace(hit->instance));
     }
     sray.rcol = Rgb();
-    ApplyPatterns(sray, surface.patterns);
-    ShadeMaterial(sray, scene_.materials[surface.material]);
+    if (!ApplyModifiers(sray, surface.patterns)) {
+        ShadeMaterial(sray, scene_.materials[surface.material]);
+    }
     return sray.rcol;
 }
 
@@ -162,8 +163,8 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
             // when sampling), black from behind.
             const bool front = src.shape == LightSource::Shape::Distant ||
                                Dot(s.dir, src.normal) < 0.0;
-            const std::vector<double>& a = scene_.materials[src.material].args;
-            c.value = front ? Rgb(a[0], a[1], a[2]) * c.coef : Rgb();
+            const Rgb& color = std::get<LightParams>(scene_.materials[src.material].params).color;
+            c.value = front ? color * c.coef : Rgb();
         } else {
             TracedRay sray;
             StartChild(sray, ray, kShadowRay, nullptr);

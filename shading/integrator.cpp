@@ -44,6 +44,7 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
     lambertian_.name = "Lamb";
     lambertian_.type = MaterialType::Plastic;
     lambertian_.args = {kPi, kPi, kPi, 0.0, 0.0};
+    lambertian_.params = MakeMaterialParams(lambertian_.type, lambertian_.args);
 
     // With indirect bounces, a glow sky lights the scene through ambient rays,
     // so the absence of direct sources is not worth a warning (as Radiance).
@@ -67,6 +68,10 @@ Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOpt
         if (s.material < 0) continue;
         MaterialType t = scene.materials[s.material].type;
         if (IsTransparentType(t) || t == MaterialType::Illum) opaqueShadows_ = false;
+    }
+    // A mixture may be partly a hole, or partly a transparent material.
+    for (const Pattern& p : scene.patterns) {
+        if (p.kind == ModifierKind::Mixture) opaqueShadows_ = false;
     }
 }
 
@@ -141,8 +146,9 @@ void Integrator::Trace(TracedRay& ray) {
         ray.rop = ray.org + ray.dir * ray.rmax;
     } else if (HitDistantSource(ray)) {
         const Surface& source = scene_.surfaces[ray.surface];
-        ApplyPatterns(ray, source.patterns);
-        ShadeMaterial(ray, scene_.materials[source.material]);
+        if (!ApplyModifiers(ray, source.patterns)) {
+            ShadeMaterial(ray, scene_.materials[source.material]);
+        }
     } else {
         ray.rot = kFhuge;
         ray.rop = ray.org;
@@ -152,9 +158,18 @@ void Integrator::Trace(TracedRay& ray) {
 
 void Integrator::Shade(TracedRay& ray) {
     const Surface& surface = scene_.HitSurface(ray.instance, ray.surface);
-    if (surface.material < 0) return;  // void: nothing to shade, black
-    const Material& m = scene_.materials[surface.material];
-    ApplyPatterns(ray, surface.patterns);
+    if (surface.material < 0 && surface.patterns.empty()) return;  // void: nothing to shade, black
+    if (ApplyModifiers(ray, surface.patterns)) return;  // a mixture shaded it
+    if (surface.material < 0) {
+        // A chain of modifiers without material (a mixture that reached none,
+        // or patterns only) is a hole in the surface, as in Radiance.
+        PassThrough(ray);
+        return;
+    }
+    ShadeSurfaceMaterial(ray, scene_.materials[surface.material]);
+}
+
+void Integrator::ShadeSurfaceMaterial(TracedRay& ray, const Material& m) {
     // -i: the first opaque, non-emitting surface reached along primary and
     // transmitted rays is measured as a Lambertian irradiance meter. The
     // transparent surfaces before it are passed straight through, unattenuated
@@ -211,6 +226,7 @@ Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double of
 void Integrator::FlipSurface(TracedRay& ray) const {
     ray.ron = -ray.ron;
     ray.rod = -ray.rod;
+    ray.pert = -ray.pert;
 }
 
 void Integrator::Report(const TracedRay& ray) {
@@ -225,7 +241,7 @@ RayResult Integrator::WithAmbientOutcome(RayResult r) const {
     return r;
 }
 
-RayResult Integrator::MakeResult(const TracedRay& ray) const {
+RayResult Integrator::MakeResult(const TracedRay& ray) {
     RayResult r;
     r.origin = ray.org;
     r.direction = ray.dir;
@@ -243,7 +259,14 @@ RayResult Integrator::MakeResult(const TracedRay& ray) const {
     r.contribution = ray.rcol * coef;
     if (ray.surface >= 0 && !ray.irradianceHit) {
         const Surface& s = scene_.HitSurface(ray.instance, ray.surface);
-        r.normal = ray.ron;
+        // rtrace's -on is raynormal(). Without any perturbation that is ron
+        // renormalised; ron is unit already, and taking it as it is keeps
+        // the output of untextured surfaces bit for bit what it was.
+        if (ray.pert == Vec3()) {
+            r.normal = ray.ron;
+        } else {
+            PerturbedNormal(ray, r.normal);
+        }
         r.geometricNormal = ray.geometricNormal;
         r.surfaceName = s.name;
         r.u = ray.lu;

@@ -6,7 +6,8 @@
 //
 // Method bodies are split by topic: integrator.cpp (ray tree, rayorigin
 // limits, -I/-i), direct.cpp (direct(), source rays), materials.cpp
-// (normal.c, m_mirror.c, glass.c, dielectric.c, m_light).
+// (normal.c, m_mirror.c, glass.c, dielectric.c, m_light, raynormal()),
+// patterns.cpp (p_func.c, t_func.c, mx_func.c, raymixture()).
 #pragma once
 
 #include <cstdint>
@@ -175,7 +176,8 @@ private:
     Hemisphere SampleAmbient(const TracedRay& ray, const Rgb& coefficient, double weight);
     bool AmbientExcluded(const TracedRay& ray) const;
     void Report(const TracedRay& ray);
-    RayResult MakeResult(const TracedRay& ray) const;
+    /// Not const: the shading normal it prints may warn (PerturbedNormal).
+    RayResult MakeResult(const TracedRay& ray);
     RayResult WithAmbientOutcome(RayResult result) const;
 
     // direct.cpp
@@ -195,14 +197,37 @@ private:
     void ShadeMirror(TracedRay& ray, const Material& m);
     void ShadeGlass(TracedRay& ray, const Material& m);
     void ShadeDielectric(TracedRay& ray, const Material& m); // dielectric, interface
-    void ShadeMaterial(TracedRay& ray, const Material& m);   // dispatch on type
-    /// Multiplies ray.pcol by each pattern of `patterns` (indices into
-    /// Scene::patterns), evaluated for this ray (patterns.cpp).
-    /// Inline for the common case of no patterns: it runs at every hit.
-    void ApplyPatterns(TracedRay& ray, const std::vector<int>& patterns) {
-        if (!patterns.empty()) ApplyPatternChain(ray, patterns);
+    /// Applies the material's own chain, then shades with it (by type, through a table).
+    void ShadeMaterial(TracedRay& ray, const Material& m);
+    /// ShadeMaterial, except that with -i the first opaque surface reached by a
+    /// primary or transmitted ray is measured instead (rayshade()'s Lamb hack).
+    void ShadeSurfaceMaterial(TracedRay& ray, const Material& m);
+    /// Radiance's raynormal(): sets `normal` to the shading normal N' =
+    /// normalize(ron + pert), reflected in the plane normal to the ray if the
+    /// perturbation tipped it to the ray's other side, and returns -dir·N'
+    /// (unclamped, same sign as rod). A sum of zero length warns once per
+    /// surface and gives ron and rod.
+    double PerturbedNormal(const TracedRay& ray, Vec3& normal);
+    /// Radiance's hastexture: |pert|² > FTINY².
+    static bool Textured(const TracedRay& ray);
+
+    // patterns.cpp
+    /// Evaluates `modifiers` (indices into Scene::patterns) for this ray in
+    /// chain order: patterns multiply ray.pcol, textures add to ray.pert,
+    /// mixtures shade both sides. True when a mixture reached a material and
+    /// so shaded the ray: the chain ends there.
+    /// Inline for the common case of an empty chain: it runs at every hit.
+    bool ApplyModifiers(TracedRay& ray, const std::vector<int>& modifiers) {
+        return !modifiers.empty() && ApplyModifierChain(ray, modifiers);
     }
-    void ApplyPatternChain(TracedRay& ray, const std::vector<int>& patterns);
+    bool ApplyModifierChain(TracedRay& ray, const std::vector<int>& modifiers);
+    /// Radiance's rayshade() from some modifier on: true if a material shaded the ray.
+    bool ShadeChain(TracedRay& ray, const ModifierChain& chain);
+    /// Radiance's raymixture(): shades copies of `ray` with `mixture`'s fore
+    /// and back chains, weighted c and 1-c (c = `coefficient` clamped to
+    /// [0, 1]), and blends their pcol and pert into `ray`, and their values
+    /// when either reached a material (then returns true).
+    bool Mix(TracedRay& ray, const Pattern& mixture, double coefficient);
     /// -I: a measuring point lying in the plane of a wall (a sensor on an
     /// edge or in a corner) would send half its sample rays through that
     /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point
@@ -220,6 +245,7 @@ private:
     /// without patterns), and the patterns whose compute errors were reported.
     std::unique_ptr<cal::Context> functionContext_;
     std::unordered_set<int> patternWarned_;
+    std::unordered_set<const Surface*> perturbationWarned_;  // surfaces with an illegal perturbation
     std::vector<LightSource> sources_;
     Material lambertian_;   // -i/-I: plastic with reflectance pi
     Rng rng_;

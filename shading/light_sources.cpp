@@ -229,10 +229,11 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
         if (s.material < 0) continue;
         const Material& m = scene.materials[s.material];
         if (!IsLightType(m.type)) continue;
-        if (m.type == MaterialType::Glow && s.type != SurfaceType::Source && m.args[3] <= kFtiny) {
+        const LightParams& params = std::get<LightParams>(m.params);
+        if (m.type == MaterialType::Glow && s.type != SurfaceType::Source && params.radius <= kFtiny) {
             continue;  // a glow without radius only shows through indirect rays
         }
-        if (m.args[0] <= kFtiny && m.args[1] <= kFtiny && m.args[2] <= kFtiny) continue;
+        if (params.color.r <= kFtiny && params.color.g <= kFtiny && params.color.b <= kFtiny) continue;
 
         LightSource src;
         src.surface = i;
@@ -251,7 +252,7 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
         }
         if (m.type == MaterialType::Glow) {
             src.proximity = true;
-            src.proximityRadius = m.args[3];
+            src.proximityRadius = params.radius;
             if (src.shape == LightSource::Shape::Distant) src.skip = true;
         } else if (m.type == MaterialType::Spotlight &&
                    src.shape == LightSource::Shape::Distant) {
@@ -261,11 +262,11 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
                 warn(s.loc.ToString() + ": distant source is a spotlight for \"" + s.name + "\"");
             }
         } else if (m.type == MaterialType::Spotlight) {
-            double angle = m.args[3];
+            double angle = params.coneAngleDegrees;
             if (angle <= kFtiny) ThrowUserError(m.loc, "zero angle for spotlight \"" + m.name + "\"");
             src.spot = true;
             src.spotSolidAngle = 2.0 * kPi * (1.0 - std::cos(kPi / 180.0 / 2.0 * angle));
-            Vec3 aim(m.args[4], m.args[5], m.args[6]);
+            Vec3 aim = params.aim;
             src.spotFocal = Length(aim);
             if (src.spotFocal == 0) {
                 ThrowUserError(m.loc, "zero focus vector for spotlight \"" + m.name + "\"");

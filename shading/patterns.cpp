@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 //
-// Patterns at a hit (radiance-functions.md §10.3, §11.1-11.7): the ray's
-// quantities in the pattern's space as the function language's channels, and
-// the pattern colour each pattern of a modifier chain multiplies in.
+// Function modifiers at a hit (radiance-functions.md §10.3, §11.1-11.9;
+// Radiance's p_func.c, p_data.c, t_func.c, mx_func.c and raymixture()):
+// the ray's quantities in the modifier's space as the function language's
+// channels; the pattern colour a pattern multiplies in, the normal
+// perturbation a texture adds, and the two shadings a mixture blends.
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "cal/ray_variables.h"
 #include "scene/data_file.h"
@@ -17,16 +20,27 @@ namespace {
 /// nothing (func.c: rot >= 0.99*FHUGE): its point is the origin.
 constexpr double kMissLength = 0.99 * kFhuge;
 
-/// The ray quantities $1 … $27 of `ray` in the space of `pattern` (§10.3).
-/// F acts on row vectors: the pattern's own transform, after the instance's
-/// when the hit is inside one (§10.1, §13.2); s is its scale.
+/// Where a modifier evaluates a ray (§10.1): its own transform, after the
+/// instance's when the hit is inside one whose materials shade it (§13.2:
+/// F = objectFromRender then patternFromWorld; back = worldFromPattern then
+/// the instance's renderFromObject; scales multiply). The one place that
+/// composes them, so that patterns, textures and mixtures all follow.
+struct PatternSpace {
+    Transform patternFromRender;  // F, on row vectors; scale s > 0
+    Transform renderFromPattern;  // F's inverse, for texture displacements; scale 1/s
+};
+
+PatternSpace PatternSpaceOf(const TracedRay& ray, const Pattern& modifier) {
+    if (!ray.objectFromRender) return {modifier.patternFromWorld, modifier.worldFromPattern};
+    return {Compose(*ray.objectFromRender, modifier.patternFromWorld),
+            Compose(modifier.worldFromPattern, Inverse(*ray.objectFromRender))};
+}
+
+/// The ray quantities $1 … $27 of `ray` in a modifier's space (§10.3).
 class PatternChannels final : public cal::ChannelSource {
 public:
-    PatternChannels(const TracedRay& ray, const Pattern& pattern)
-        : ray_(ray),
-          f_(ray.objectFromRender ? Compose(*ray.objectFromRender, pattern.patternFromWorld)
-                                  : pattern.patternFromWorld),
-          s_(f_.scale) {}
+    PatternChannels(const TracedRay& ray, const PatternSpace& space)
+        : ray_(ray), f_(space.patternFromRender), s_(space.patternFromRender.scale) {}
 
     double Channel(int n) const override {
         using namespace cal;
@@ -67,51 +81,115 @@ private:
     }
 
     const TracedRay& ray_;
-    const Transform f_;
+    const Transform& f_;
     const double s_;
 };
 
 }  // namespace
 
-void Integrator::ApplyPatternChain(TracedRay& ray, const std::vector<int>& patterns) {
+bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modifiers) {
     const cal::Program& functions = *scene_.functions;
-    cal::Context& context = *functionContext_;
-    for (const int index : patterns) {
-        const Pattern& pattern = scene_.patterns[static_cast<std::size_t>(index)];
-        const PatternChannels channels(ray, pattern);
+    for (const int index : modifiers) {
+        const Pattern& modifier = scene_.patterns[static_cast<std::size_t>(index)];
+        const PatternSpace space = PatternSpaceOf(ray, modifier);
+        // Mixtures recurse into ApplyModifiers through ShadeChain, so the
+        // context is set up afresh for each modifier.
+        cal::Context& context = *functionContext_;
+        const PatternChannels channels(ray, space);
         context.SetChannels(&channels);
-        context.SetArguments(pattern.args, pattern.owner);
+        context.SetArguments(modifier.args, modifier.owner);
         context.NextEvaluation();
         double v[3] = {1.0, 1.0, 1.0};
-        if (pattern.data.arrays.empty()) {
-            for (std::size_t k = 0; k < pattern.values.size(); ++k) {
-                v[k] = functions.Evaluate(pattern.values[k], context);
+        if (modifier.data.arrays.empty()) {
+            for (std::size_t k = 0; k < modifier.values.size(); ++k) {
+                v[k] = functions.Evaluate(modifier.values[k], context);
             }
         } else {
             // *data and *pict: the expressions are the coordinates (at most
             // kMaxDataDimensions; pictures 2) of the data point.
             double point[kMaxDataDimensions] = {};
-            for (std::size_t k = 0; k < pattern.values.size(); ++k) {
-                point[k] = functions.Evaluate(pattern.values[k], context);
+            for (std::size_t k = 0; k < modifier.values.size(); ++k) {
+                point[k] = functions.Evaluate(modifier.values[k], context);
             }
             const auto f = EvaluateDataLookup(
-                pattern.data, std::span<const double>(point, pattern.values.size()), functions,
+                modifier.data, std::span<const double>(point, modifier.values.size()), functions,
                 context);
             std::copy(f.begin(), f.end(), v);
         }
         context.SetChannels(nullptr);
         if (context.mathError() != cal::MathError::None) {
-            // Radiance skips the pattern for this ray (its value counts as 1)
-            // and warns; once per pattern here, not once per ray.
+            // Radiance skips the modifier for this ray (a pattern counts as
+            // 1, a texture adds nothing, a mixture is no material) and warns;
+            // once per modifier here, not once per ray.
             if (patternWarned_.insert(index).second && warn_) {
-                warn_("compute error for " + pattern.owner + " (" + context.mathErrorText() + ")");
+                warn_("compute error for " + modifier.owner + " (" + context.mathErrorText() + ")");
             }
             continue;
         }
-        const bool grey =
-            pattern.type == PatternType::BrightFunc || pattern.type == PatternType::BrightData;
-        ray.pcol *= grey ? Rgb(v[0], v[0], v[0]) : Rgb(v[0], v[1], v[2]);
+        switch (modifier.kind) {
+            case ModifierKind::Pattern: {
+                const bool grey = modifier.type == PatternType::BrightFunc ||
+                                  modifier.type == PatternType::BrightData;
+                ray.pcol *= grey ? Rgb(v[0], v[0], v[0]) : Rgb(v[0], v[1], v[2]);
+                break;
+            }
+            case ModifierKind::Texture: {
+                // Turned into render space; its length is not scaled (§11.8).
+                const Transform& back = space.renderFromPattern;
+                ray.pert += back.Vector(Vec3(v[0], v[1], v[2])) / back.scale;
+                break;
+            }
+            case ModifierKind::Mixture:
+                if (Mix(ray, modifier, v[0])) return true;
+                break;
+        }
     }
+    return false;
+}
+
+bool Integrator::ShadeChain(TracedRay& ray, const ModifierChain& chain) {
+    if (ApplyModifiers(ray, chain.modifiers)) return true;
+    if (chain.material < 0) return false;
+    ShadeSurfaceMaterial(ray, scene_.materials[static_cast<std::size_t>(chain.material)]);
+    return true;
+}
+
+bool Integrator::Mix(TracedRay& ray, const Pattern& mixture, double coefficient) {
+    const double c = std::clamp(coefficient, 0.0, 1.0);
+    // Each side shades its own copy of the ray, with its share of the
+    // weight, so neither sees the other's flips, patterns or results.
+    TracedRay fore = ray, back = ray;
+    bool foreMaterial = false, backMaterial = false;
+    if (c > kFtiny) {
+        fore.rweight *= c;
+        fore.sourceWeight *= c;
+        fore.rcoef *= c;
+        foreMaterial = ShadeChain(fore, mixture.fore);
+    }
+    if (c < 1.0 - kFtiny) {
+        back.rweight *= 1.0 - c;
+        back.sourceWeight *= 1.0 - c;
+        back.rcoef *= 1.0 - c;
+        backMaterial = ShadeChain(back, mixture.back);
+    }
+    // Where only one side is a material, the other is a hole in it.
+    if (foreMaterial != backMaterial) {
+        if (backMaterial && c > kFtiny) {
+            PassThrough(fore);
+        } else if (foreMaterial && c < 1.0 - kFtiny) {
+            PassThrough(back);
+        }
+    }
+    ray.pert = fore.pert * c + back.pert * (1.0 - c);
+    ray.pcol = fore.pcol * c + back.pcol * (1.0 - c);
+    if (!foreMaterial && !backMaterial) return false;  // acted as a pattern/texture
+    ray.rcol = fore.rcol * c + back.rcol * (1.0 - c);
+    ray.mcol = fore.mcol * c + back.mcol * (1.0 - c);
+    // One distance each: the dominant side's.
+    const TracedRay& major = c >= 0.5 ? fore : back;
+    ray.rmt = major.rmt;
+    ray.rxt = major.rxt;
+    return true;
 }
 
 }  // namespace rt

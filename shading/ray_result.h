@@ -22,7 +22,7 @@ struct RayResult {
     double unmirroredLength = kFhuge;  // -oX (rxt)
     double firstLength = kFhuge;       // -oL (rot); kFhuge on a miss
     Vec3 point;                 // -op: hit point; the origin on a miss
-    Vec3 normal;                // -on: shading normal, flipped toward the ray; 0 if no object
+    Vec3 normal;                // -on: raynormal(), textures included, as shading left it; 0 if none
     Vec3 geometricNormal;       // -oN: unperturbed normal as the surface defines it; 0 if none
     double weight = 1;          // -ow
     Rgb coefficient{1, 1, 1};   // -oW: product of coefficients up the ray tree

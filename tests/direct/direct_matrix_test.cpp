@@ -15,6 +15,11 @@
 //   brightdata, colordata, colorpict, an ies2rad-style luminaire, bad input),
 //   answers in tests/data/datafiles/expected.txt; lazyrad runs with RAYPATH
 //   set to that folder (its own source.cal and rayinit.cal are built in).
+// - textures and mixtures (tests/direct/generate_textures.py: texfunc on
+//   every material using the perturbed normal, with transforms and chains;
+//   mixfunc of materials, void, patterns, textures and mixtures, seen by
+//   primary and shadow rays and as light sources; -ab 1; errors), answers in
+//   tests/data/textures/expected.txt.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -123,6 +128,7 @@ const std::vector<MatrixRun>& Matrix() {
         std::vector<MatrixRun> all = LoadMatrix("direct");
         for (MatrixRun& r : LoadMatrix("patterns")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("datafiles")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("textures")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -316,6 +322,8 @@ INSTANTIATE_TEST_SUITE_P(Patterns, DirectMatrix, ::testing::ValuesIn(Groups("pat
                          GroupName);
 INSTANTIATE_TEST_SUITE_P(DataFiles, DirectMatrix, ::testing::ValuesIn(Groups("datafiles")),
                          GroupName);
+INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("textures")),
+                         GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -341,6 +349,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("direct").size(), 60u);
     EXPECT_GE(Groups("patterns").size(), 6u);
     EXPECT_GE(Groups("datafiles").size(), 7u);
+    EXPECT_GE(Groups("textures").size(), 8u);
 }
 
 }  // namespace

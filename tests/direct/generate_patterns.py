@@ -43,19 +43,21 @@ def write(name, text):
         f.write(text)
 
 
-def radiance(files, rays, repeat, options, tmp):
+def radiance(files, rays, repeat, options, tmp, out=OUT):
+    """Real Radiance's status, messages, rows and (repeat > 1) standard errors
+    for `rays` (a file in `out`) through the scene `files` (in `out`)."""
     octree = os.path.join(tmp, "scene.oct")
     with open(octree, "wb") as f:
         oc = subprocess.run([os.path.join(BIN, "oconv")] + files, stdout=f,
-                            stderr=subprocess.PIPE, env=ENV, cwd=OUT)
+                            stderr=subprocess.PIPE, env=ENV, cwd=out)
     if oc.returncode != 0:
         return oc.returncode, [l.replace(os.path.join(BIN, "oconv"), "oconv")
                                for l in oc.stderr.decode().splitlines()], [], []
-    with open(os.path.join(OUT, rays)) as f:
+    with open(os.path.join(out, rays)) as f:
         lines = [l for l in f.read().splitlines() if l.strip()]
     r = subprocess.run([os.path.join(BIN, "rtrace"), "-h"] + options.split() + [octree],
                        input="".join((l + "\n") * repeat for l in lines), capture_output=True,
-                       text=True, env=ENV, cwd=OUT)
+                       text=True, env=ENV, cwd=out)
     rows = [[float(x) for x in l.split()] for l in r.stdout.splitlines() if l.strip()]
     err = [l.replace(os.path.join(BIN, "rtrace"), "rtrace") for l in r.stderr.splitlines()]
     sems = []

@@ -41,6 +41,17 @@ TEST(BuildScene, MaterialsAndArgumentCounts) {
     EXPECT_EQ(scene.materials[5].alternate, -1);
     EXPECT_EQ(scene.materials[12].type, MaterialType::Interface);
     EXPECT_EQ(scene.materials[12].loc.ToString(), "t.rad:13");
+    // Parameters by name, read once here.
+    const auto& trans = std::get<NormalParams>(scene.materials[2].params);
+    EXPECT_EQ(trans.transmissivity, 0.5);
+    EXPECT_EQ(trans.transmittedSpecular, 0.5);
+    EXPECT_EQ(std::get<NormalParams>(scene.materials[1].params).roughness, 0.1);
+    EXPECT_EQ(std::get<LightParams>(scene.materials[7].params).coneAngleDegrees, 30);
+    EXPECT_EQ(std::get<LightParams>(scene.materials[7].params).aim, Vec3(0, 0, -1));
+    EXPECT_EQ(std::get<GlassParams>(scene.materials[9].params).index, 1.52);
+    EXPECT_EQ(std::get<GlassParams>(scene.materials[10].params).index, 1.5);
+    EXPECT_EQ(std::get<DielectricParams>(scene.materials[12].params).outsideIndex, 1);
+    EXPECT_EQ(std::get<DielectricParams>(scene.materials[12].params).insideIndex, 1.3);
     EXPECT_TRUE(scene.surfaces.empty());
 }
 
@@ -68,10 +79,10 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: unsupported material type 'BRTDfunc'");
     EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
               "t.rad:1: unsupported material type 'antimatter'");
-    EXPECT_EQ(BuildError("void texfunc t 4 dx dy dz . 0 0\n"),
-              "t.rad:1: unsupported material type 'texfunc'");
-    EXPECT_EQ(BuildError("void mixfunc m 4 a b c . 0 0\n"),
-              "t.rad:1: unsupported material type 'mixfunc'");
+    EXPECT_EQ(BuildError("void texdata t 8 fx fy fz x.dat y.dat z.dat . Px 0 0\n"),
+              "t.rad:1: unsupported material type 'texdata'");
+    EXPECT_EQ(BuildError("void mixdata m 6 a b f m.dat . Px 0 0\n"),
+              "t.rad:1: unsupported material type 'mixdata'");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
@@ -433,6 +444,87 @@ TEST(BuildScenePatterns, Errors) {
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\nvoid brightfunc b 2 1 . 0 0\n"
                          "b alias c a\nc plastic d 0 0 5 1 1 1 0 0\n"),
               "t.rad:4: conflicting material \"c\" in the modifiers of plastic \"d\"");
+}
+
+TEST(BuildSceneTextures, TexfuncIsATextureInTheChain) {
+    const Scene scene = BuildText(
+        "void colorfunc c 4 1 2 3 . 0 0\n"
+        "c texfunc t 8 .5 0 0 . -rz 90 -s 2\n0\n0\n"
+        "t plastic m 0 0 5 .5 .5 .5 0 0\n"
+        "m polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n");
+    ASSERT_EQ(scene.patterns.size(), 2u);
+    const Pattern& t = scene.patterns[1];
+    EXPECT_EQ(t.kind, ModifierKind::Texture);
+    EXPECT_EQ(t.values.size(), 3u);
+    EXPECT_EQ(scene.materials[0].patterns, (std::vector<int>{1, 0}));
+    // Its displacement turns with the transform as written (§11.8): x to y;
+    // the scale is divided out where it is applied.
+    const Vec3 d = t.worldFromPattern.Vector(Vec3(0.5, 0, 0)) / t.worldFromPattern.scale;
+    ExpectNear(d, Vec3(0, 0.5, 0), 1e-15);
+    EXPECT_EQ(BuildError("void texfunc t 3 1 0 0 0 0\n"),
+              "t.rad:1: bad number of arguments for texfunc \"t\"");
+}
+
+TEST(BuildSceneMixtures, SidesAreTheChainsDefinedBefore) {
+    const Scene scene = BuildText(
+        "void plastic a 0 0 5 .5 .5 .5 0 0\n"
+        "void brightfunc b 2 2 . 0 0\n"
+        "b metal c 0 0 5 .5 .5 .5 .9 0\n"
+        "c brightfunc q 2 3 . 0 0\n"             // a pattern, then c (with b)
+        "void mixfunc mx 4 a q .5 . 0 0\n"
+        "void mixfunc nest 4 mx void .5 . 0 0\n"
+        "nest polygon s 0 0 9 0 0 0 1 0 0 0 1 0\n"
+        "void plastic a 0 0 5 1 1 1 0 0\n");     // later: not the mixture's
+    ASSERT_EQ(scene.patterns.size(), 4u);
+    const Pattern& mx = scene.patterns[2];
+    EXPECT_EQ(mx.kind, ModifierKind::Mixture);
+    EXPECT_EQ(mx.values.size(), 1u);
+    EXPECT_EQ(mx.fore.material, 0);
+    EXPECT_TRUE(mx.fore.modifiers.empty());
+    EXPECT_EQ(mx.back.modifiers, std::vector<int>{1});
+    EXPECT_EQ(mx.back.material, 1);
+    EXPECT_EQ(scene.materials[1].patterns, std::vector<int>{0});
+    const Pattern& nest = scene.patterns[3];
+    EXPECT_EQ(nest.fore.modifiers, std::vector<int>{2});
+    EXPECT_EQ(nest.fore.material, -1);
+    EXPECT_EQ(nest.back.material, -1);
+    // The surface's chain ends at the mixture: no single material.
+    EXPECT_EQ(scene.surfaces[0].patterns, std::vector<int>{3});
+    EXPECT_EQ(scene.surfaces[0].material, -1);
+}
+
+TEST(BuildSceneMixtures, PatternMixtureKeepsItsModifier) {
+    const Scene scene = BuildText(
+        "void light l 0 0 3 1 1 1\n"
+        "void brightfunc b2 2 2 . 0 0\nvoid brightfunc b4 2 4 . 0 0\n"
+        "l mixfunc mx 4 b2 b4 .25 . 0 0\n"
+        "mx polygon s 0 0 9 0 0 0 1 0 0 0 1 0\n");
+    EXPECT_EQ(scene.surfaces[0].patterns, std::vector<int>{2});
+    EXPECT_EQ(scene.surfaces[0].material, 0);
+}
+
+TEST(BuildSceneMixtures, Errors) {
+    EXPECT_EQ(BuildError("void mixfunc mx 3 a b .5 0 0\n"),
+              "t.rad:1: bad number of arguments for mixfunc \"mx\"");
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\n"
+                         "void mixfunc mx 4 a nosuch .5 . 0 0\n"),
+              "t.rad:2: undefined modifier \"nosuch\" for mixfunc \"mx\"");
+    // Defined only after the mixture: undefined for it.
+    EXPECT_EQ(BuildError("void mixfunc mx 4 void a .5 . 0 0\n"
+                         "void plastic a 0 0 5 1 1 1 0 0\n"),
+              "t.rad:1: undefined modifier \"a\" for mixfunc \"mx\"");
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\n"
+                         "a mixfunc mx 4 a void .5 . 0 0\n"),
+              "t.rad:2: inappropriate modifier for mixfunc \"mx\"");
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\n"
+                         "void mixfunc mx 4 a void .5 . 0 0\n"
+                         "void brightfunc b 2 1 . 0 0\nb alias mx2 mx\n"),
+              "t.rad:4: inappropriate modifier for mixfunc \"mx2\"");
+    // A mixture with a material in a material's own chain is a second material.
+    EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\n"
+                         "void mixfunc mx 4 a void .5 . 0 0\n"
+                         "mx plastic d 0 0 5 1 1 1 0 0\n"),
+              "t.rad:3: conflicting material \"mx\" in the modifiers of plastic \"d\"");
 }
 
 }  // namespace

@@ -19,6 +19,7 @@ public:
         m.name = name;
         m.type = type;
         m.args = std::move(args);
+        m.params = MakeMaterialParams(type, m.args);
         scene_.materials.push_back(m);
         return static_cast<int>(scene_.materials.size()) - 1;
     }
