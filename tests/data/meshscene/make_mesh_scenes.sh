@@ -24,11 +24,14 @@ awk 'BEGIN { for (i = 0; i < 40; i++) for (j = 0; j < 40; j++) {
 rtrace -h -ab 0 -ovlpnNsm room.oct < room.rays > room_ab0.txt
 rtrace -h -ab 0 -ovlpnNsm room_frozen.oct < room.rays > room_frozen_ab0.txt
 printf '%s\n' '1 -1 0.01 0 0 1' '3 -1 0.01 0 0 1' '1 2 0.01 0 0 1' '5 1 0.01 0 0 1' \
-  '3 3.2 0.01 0 0 1' '6.5 3 0.01 0 0 1' > floor.pts
+  '3 3.2 0.01 0 0 1' '7 0 0.01 0 0 1' > floor.pts
 for i in 1 2 3 4 5 6 7 8; do
   rtrace -h -I -ab 1 -aa 0 -ad 8192 -as 0 -lw 1e-5 -u+ -ov room.oct < floor.pts
-done | awk '{ s[NR % 6] += $1; n[NR % 6]++ } END { for (k = 1; k <= 6; k++) { j = k % 6; printf "%.5f\n", s[j] / n[j] } }' \
-  > room_floor_ab1.txt
+  sleep 1.1  # Radiance seeds -u+ from the clock in seconds
+done | awk '{ j = NR % 6; s[j] += $1; s2[j] += $1 * $1; n[j]++ }
+  END { for (k = 1; k <= 6; k++) { j = k % 6; m = s[j] / n[j]; v = s2[j] / n[j] - m * m
+    # mean and its relative standard error
+    printf "%.5f %.5f\n", m, sqrt((v > 0 ? v : 0) / (n[j] - 1)) / m } }' > room_floor_ab1.txt
 
 # radiance-functions.md §13.6 item 5: the worked-example mesh placed three
 # ways, with (u,v) from the mesh in a pattern.
