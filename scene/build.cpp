@@ -95,7 +95,9 @@ struct ModifierDef {
 /// first data file has dimensions), then an optional transform.
 /// brightfunc `v file`, colorfunc `r g b file`, texfunc `dx dy dz file`,
 /// mixfunc `fore back c file`, brightdata `f data file x1…xn`, colordata
-/// `fr fg fb dr dg db file x1…xn`, colorpict `fr fg fb pict file u v`.
+/// `fr fg fb dr dg db file x1…xn`, colorpict `fr fg fb pict file u v`,
+/// texdata `fx fy fz dx dy dz file x1…xn`, mixdata `fore back f data file
+/// x1…xn`, mixpict `fore back f pict file u v`.
 struct PatternSpec {
     const char* name;
     PatternType type;
@@ -114,6 +116,9 @@ constexpr PatternSpec kPatternSpecs[] = {
     {"brightdata", PatternType::BrightData, ModifierKind::Pattern, 0, -1, 1, 1},
     {"colordata", PatternType::ColorData, ModifierKind::Pattern, 0, -1, 3, 3},
     {"colorpict", PatternType::ColorPict, ModifierKind::Pattern, 0, 2, 3, 1, true},
+    {"texdata", PatternType::TexData, ModifierKind::Texture, 0, -1, 3, 3},
+    {"mixdata", PatternType::MixData, ModifierKind::Mixture, 2, -1, 1, 1},
+    {"mixpict", PatternType::MixPict, ModifierKind::Mixture, 2, 2, 1, 1, true},
 };
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
@@ -351,7 +356,7 @@ private:
         const bool hasData = spec.functions > 0;
         const std::size_t names = static_cast<std::size_t>(spec.names);
         const std::size_t fileAt =
-            hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : names + expressions;
+            names + (hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : expressions);
         std::size_t exprAt = names;
         if (!hasData) {
             if (words.size() < fileAt + 1) BadArgs(object);
@@ -405,17 +410,20 @@ private:
                 words[exprAt + k], where + ": " + pattern.owner, context));
         }
         for (int k = 0; k < spec.functions; ++k) {
-            const std::string& name = words[static_cast<std::size_t>(k)];
+            const std::string& name = words[names + static_cast<std::size_t>(k)];
             const std::optional<cal::Function> f = functions.FindFunction(name, context);
             if (!f) {
                 ThrowUserError(object.loc, pattern.owner + ": " + PrintableWord(name) +
                                                ": undefined function");
             }
             pattern.data.functions.push_back(*f);
-            // colordata and colorpict give a function of three or more
-            // parameters all three values, others their own channel's.
-            pattern.data.argCounts.push_back(
-                spec.functions == 3 && functions.Arity(*f) >= 3 ? 3 : 1);
+            // texdata and mixpict always give their functions all three
+            // values; colordata and colorpict a function of three or more
+            // parameters all three, others their own channel's (§11.2).
+            const bool allThree = spec.type == PatternType::TexData ||
+                                  spec.type == PatternType::MixPict ||
+                                  (spec.functions == 3 && functions.Arity(*f) >= 3);
+            pattern.data.argCounts.push_back(allThree ? 3 : 1);
         }
         const int modifier = ResolveModifier(object);
         CheckMixtureModifier(object, pattern, modifier);
@@ -427,7 +435,7 @@ private:
     /// *data / *pict pattern, each file loaded once per scene.
     void LoadData(const PatternSpec& spec, const SceneObject& object, DataLookup& data) {
         const std::string requestedBy = object.loc.ToString() + ": " + Describe(object);
-        const std::size_t first = static_cast<std::size_t>(spec.functions);
+        const std::size_t first = static_cast<std::size_t>(spec.names + spec.functions);
         if (spec.picture) {
             const auto channels = dataFiles_.Picture(object.sargs[first], requestedBy);
             data.arrays.assign(channels.begin(), channels.end());
@@ -445,7 +453,11 @@ private:
     void AddMaterial(const SceneObject& object) {
         const MaterialSpec* spec = FindMaterialSpec(object.type);
         if (spec == nullptr) {
-            ThrowUserError(object.loc, "unsupported material type '" + object.type + "'");
+            ThrowUserError(object.loc, "unsupported material type '" + object.type + "'" +
+                                           (IsTextType(object.type)
+                                                ? " (text patterns need Radiance's font files, "
+                                                  "which lazyrad does not read)"
+                                                : ""));
         }
         const int modifier = ResolveModifier(object);
         const int nreals = static_cast<int>(object.rargs.size());

@@ -5,8 +5,8 @@
 // Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
 //
 // Only what lazyrad can shade is represented: materials, the patterns
-// brightfunc, colorfunc, brightdata, colordata and colorpict, the texture
-// texfunc and the mixture mixfunc. A scene using any other modifier type is
+// brightfunc, colorfunc, brightdata, colordata and colorpict, the textures
+// texfunc and texdata, the mixtures mixfunc, mixdata and mixpict. A scene using any other modifier type is
 // rejected at load time with "file:line: unsupported material type 'X'".
 #pragma once
 
@@ -101,7 +101,10 @@ struct Material {
     FileLoc loc;
 };
 
-enum class PatternType { BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, MixFunc };
+enum class PatternType {
+    BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, TexData, MixFunc, MixData,
+    MixPict
+};
 
 /// What a function modifier does to a ray (radiance-functions.md §11.1).
 enum class ModifierKind {

@@ -216,6 +216,39 @@ def main():
         for rname, options in (("ds0", f"{DET} -ds 0 -I -ab 0"), ("ds02", f"{DET} -ds 0.2 -I -ab 0")):
             runs.append(("ies", f"{name}_{rname}", [f"ies_{name}.rad"], "floor.pts", options))
 
+    # 6b. texdata (three functions, always of the three values), mixdata and
+    # mixpict (one function; mixpict's of the three picture values), on their
+    # own and under materials, with a transform.
+    write("tex.cal", "tx(a, b, c) = a;\nty(a, b, c) = b;\ntz(a, b, c) = c + 0 * a * b;\n")
+    write("tdx.dat", "1\n0 4 5\n0 .2 .4 -.3 .1\n")
+    write("tdy.dat", "1\n0 4 5\n.1 0 -.2 .3 0\n")
+    write("tdz.dat", "1\n0 4 5\n0 0 .1 .2 .3\n")
+    write("mix.dat", "1\n0 4 5\n0 .25 .5 1 1.5\n")
+    picture("m.hdr", 4, 2, [[(c / 4, 0.5, 0.2) for c in range(4)], [(0.9, c / 5, 0.1) for c in range(4)]])
+    lamp = "void light lamp 0 0 3 100 100 100\nlamp sphere bulb 0 0 4 1 0.5 4 .5\n"
+    for name, xf in (("plain", ""), ("xf", " -rz 90 -s 2")):
+        write(f"texdata_{name}.rad", counted(
+              lamp + f"void texdata tex\nN# tx ty tz tdx.dat tdy.dat tdz.dat tex.cal Px{xf}\n0\n0\n"
+              "tex plastic shiny 0 0 5 .6 .5 .4 .05 .02\nshiny " + PLANE + "\n"))
+        runs.append(("texdata", name, [f"texdata_{name}.rad"], "eye.rays", f"{DET} -ab 0 -ovn"))
+    for name, pattern in (
+            ("mixdata", "void mixdata mx\nN# red blue noop mix.dat . Px\n0\n0\n"),
+            ("mixdata_xf", "void mixdata mx\nN# red blue noop mix.dat . Px -t 1 0 0\n0\n0\n"),
+            ("mixpict", "void mixpict mx\nN# red blue grey m.hdr . Px Py\n0\n0\n"),
+            ("mixpict_void", "void mixpict mx\nN# red void grey m.hdr . Px Py\n0\n0\n")):
+        write(f"mix_{name}.rad", counted(
+              "void light red 0 0 3 1 0 0\nvoid light blue 0 0 3 0 0 1\n"
+              "void light behind 0 0 3 0 2 0\nbehind polygon under 0 0 12 "
+              "-10 -10 -1  10 -10 -1  10 10 -1  -10 10 -1\n" + pattern + "mx " + PLANE + "\n"))
+        runs.append(("mixdata", name, [f"mix_{name}.rad"], "x.rays" if "data" in name else "uv.rays",
+                     "-ab 0"))
+    # Two patterns mixed by data under a light: the mixture acts as a pattern.
+    write("mix_patterns.rad", counted(
+          "void brightfunc b2 2 2 . 0 0\nvoid brightfunc b4 2 4 . 0 0\n"
+          "void mixdata mx\nN# b2 b4 noop mix.dat . Px\n0\n0\n"
+          "mx light lit 0 0 3 1 1 1\nlit " + PLANE + "\n"))
+    runs.append(("mixdata", "patterns", ["mix_patterns.rad"], "x.rays", "-ab 0"))
+
     # 7. Bad input: each a fatal error from both programs.
     bad = {
         "nonmonotonic": "1\n0 0 4 0 2 1 3\n1 2 3 4\n",

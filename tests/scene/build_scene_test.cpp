@@ -79,10 +79,10 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: unsupported material type 'BRTDfunc'");
     EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
               "t.rad:1: unsupported material type 'antimatter'");
-    EXPECT_EQ(BuildError("void texdata t 8 fx fy fz x.dat y.dat z.dat . Px 0 0\n"),
-              "t.rad:1: unsupported material type 'texdata'");
-    EXPECT_EQ(BuildError("void mixdata m 6 a b f m.dat . Px 0 0\n"),
-              "t.rad:1: unsupported material type 'mixdata'");
+    // The text types need Radiance's font files.
+    EXPECT_EQ(BuildError("void brighttext t 2 helvet.fnt text.txt 0 9 0 0 0 1 0 0 0 0 1\n"),
+              "t.rad:1: unsupported material type 'brighttext' (text patterns need Radiance's "
+              "font files, which lazyrad does not read)");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
