@@ -457,11 +457,11 @@ struct RayCore::Impl {
 
     // kInstanced: the callback runs inside an instance (a prototype's Embree
     // scene), so its exact ray is mapped into the instance's object space.
-    template <bool kInstanced>
+    // kMesh: the primitives are mesh triangles, whose index the hit keeps.
+    template <bool kInstanced, bool kMesh = false>
     static void PolygonIntersectFilter(const RTCFilterFunctionNArguments* args);
     template <bool kInstanced>
     static void PolygonOccludedFilter(const RTCFilterFunctionNArguments* args);
-    static void MeshIntersectFilter(const RTCFilterFunctionNArguments* args);
     static void UserBounds(const RTCBoundsFunctionArguments* args);
     template <bool kInstanced, typename Shape,
               std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
@@ -492,7 +492,7 @@ struct RayCore::Impl {
 // N == 1 and the ray/hit pointers are plain RTCRay/RTCRayHit. The instance a
 // callback runs in is the context's instID[0] (invalid in the world).
 
-template <bool kInstanced>
+template <bool kInstanced, bool kMesh>
 void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* args) {
     RT_DCHECK(args->N == 1);
     auto& q = *reinterpret_cast<Query*>(args->context);
@@ -504,26 +504,8 @@ void RayCore::Impl::PolygonIntersectFilter(const RTCFilterFunctionNArguments* ar
     double num, denom;
     if (!PlaneCandidate(r, plane, num, denom) ||
         !q.Offer(kInstanced ? num / denom * r.scale : num / denom, Query::InstanceOf<kInstanced>(instID),
-                 plane.surface, -1, plane.normal)) {
+                 plane.surface, kMesh ? static_cast<int>(hit->primID) : -1, plane.normal)) {
         args->valid[0] = 0;  // Embree restores tfar and keeps traversing
-        return;
-    }
-    reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
-}
-
-void RayCore::Impl::MeshIntersectFilter(const RTCFilterFunctionNArguments* args) {
-    RT_DCHECK(args->N == 1);
-    auto& q = *reinterpret_cast<Query*>(args->context);
-    const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
-    const auto& planes = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
-    const PolygonPlane& plane = planes[hit->primID];
-    const unsigned instID = args->context->instID[0];
-    const ExactRay& r = q.RayIn<true>(instID);
-    double num, denom;
-    if (!PlaneCandidate(r, plane, num, denom) ||
-        !q.Offer(num / denom * r.scale, Query::InstanceOf<true>(instID), plane.surface,
-                 static_cast<int>(hit->primID), plane.normal)) {
-        args->valid[0] = 0;
         return;
     }
     reinterpret_cast<RTCRay*>(args->ray)->tfar = q.FarBound();
@@ -870,7 +852,7 @@ void RayCore::Impl::BuildMesh(Layer& layer, Geometry& geometry) {
         for (int k = 0; k < 3; ++k) ib[3 * i + k] = static_cast<unsigned>(mesh.triangles[i].v[k]);
     }
     rtcSetGeometryUserData(geom, &geometry.meshPlanes);
-    rtcSetGeometryIntersectFilterFunction(geom, &MeshIntersectFilter);
+    rtcSetGeometryIntersectFilterFunction(geom, &PolygonIntersectFilter<true, true>);
     rtcSetGeometryOccludedFilterFunction(geom, &PolygonOccludedFilter<true>);
     AttachGeometry(layer, geom, kMeshGeometry);
     Check("triangle mesh");

@@ -495,14 +495,9 @@ private:
     /// material from the chain starting at definition `modifier`; a chain
     /// without a material leaves the surface as void.
     void SetModifiers(Surface& surface, int modifier) const {
-        for (int d = modifier; d != -1; d = defs_[static_cast<std::size_t>(d)].modifier) {
-            const ModifierDef& m = defs_[static_cast<std::size_t>(d)];
-            if (m.material >= 0) {
-                surface.material = m.material;
-                break;
-            }
-            surface.patterns.push_back(m.pattern);
-        }
+        ModifierChain chain = ChainFrom(modifier);
+        surface.material = chain.material;
+        surface.patterns = std::move(chain.modifiers);
     }
 
     void AddSurface(const SceneObject& object) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "raycore/raycore.h"
+#include "tests/raycore/test_scenes.h"
 #include "scene/loader.h"
 #include "scene/transform.h"
 
@@ -86,13 +87,7 @@ Scene InstancedScene(const std::string& extra) {
     return scene;
 }
 
-Vec3 RandomDirection(std::mt19937& rng) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const Vec3 d{n(rng), n(rng), n(rng)};
-        if (LengthSquared(d) > 1e-6) return Normalize(d);
-    }
-}
+using testing::RandomDirection;
 
 TEST(Instances, HitsEqualTheSurfacesTransformedIntoTheWorld) {
     const Scene world = WorldScene("");

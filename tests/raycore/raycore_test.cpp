@@ -33,13 +33,7 @@ double MaxAbsForTest(const Vec3& v) {
 
 int MaterialTypeNameForTest(MaterialType type) { return static_cast<int>(type); }
 
-Vec3 RandomDirection(std::mt19937& rng) {
-    std::normal_distribution<double> g;
-    for (;;) {
-        const Vec3 v{g(rng), g(rng), g(rng)};
-        if (LengthSquared(v) > 1e-6) return Normalize(v);
-    }
-}
+using testing::RandomDirection;
 
 TEST(RayCore, EmptySceneAndSourcesOnly) {
     SceneBuilder b;

@@ -4,6 +4,7 @@
 // surfaces with geometry derived the way the loader derives it (§2.4).
 #pragma once
 
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,15 @@
 #include "scene/scene.h"
 
 namespace rt::testing {
+
+/// A direction uniformly distributed over the sphere.
+inline Vec3 RandomDirection(std::mt19937& rng) {
+    std::normal_distribution<double> g;
+    for (;;) {
+        const Vec3 v{g(rng), g(rng), g(rng)};
+        if (LengthSquared(v) > 1e-6) return Normalize(v);
+    }
+}
 
 /// Radiance's polygon set-up (face.c getface): normal from the fan of cross
 /// products, area, and plane offset as the mean of Dot(normal, v).
