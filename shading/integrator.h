@@ -275,6 +275,7 @@ private:
         std::vector<SourceSample> samples;
         std::vector<SourcePartition> partitions;
         std::vector<DirectContribution> contributions;
+        std::vector<DirectContribution> sortBuffer;
         std::vector<double> tail;
     };
     std::vector<DirectScratch> directScratch_;
