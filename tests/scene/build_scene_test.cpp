@@ -280,6 +280,17 @@ TEST(BuildScene, MissingInstanceFilesAreSystemErrors) {
     EXPECT_EQ(missing("void mesh m 1 x.rtm 0 0\n"), "t.rad:1: cannot find mesh file \"x.rtm\"");
 }
 
+/// For untrusted input (the fuzzers) instance and mesh files are not read.
+TEST(BuildScene, InstanceFilesCanBeDisabled) {
+    SceneLoadOptions options;
+    options.readFiles = false;
+    const std::string square = std::string(RT_SOURCE_DIR) + "/tests/data/instance/square_frozen.oct";
+    const auto objects = rt::testing::ParseText("void instance a 1 " + square + " 0 0\n");
+    EXPECT_EQ(rt::testing::ErrorMessage([&] { BuildScene(objects, {}, options); }),
+              "t.rad:1: instance \"a\": files disabled");
+    EXPECT_NO_THROW(BuildScene(objects, {}));
+}
+
 /// oconv bounds an instance by its octree's cube, placed (radiance-functions.md
 /// §13.1): two instances of a unit square, verified with Radiance's getinfo -d.
 TEST(BuildScene, InstancesBoundTheCubeByTheirPlacedCubes) {
