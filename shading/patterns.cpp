@@ -24,23 +24,36 @@ constexpr double kMissLength = 0.99 * kFhuge;
 /// instance's when the hit is inside one whose materials shade it (§13.2:
 /// F = objectFromRender then patternFromWorld; back = worldFromPattern then
 /// the instance's renderFromObject; scales multiply). The one place that
-/// composes them, so that patterns, textures and mixtures all follow.
-struct PatternSpace {
-    Transform patternFromRender;  // F, on row vectors; scale s > 0
-    Transform renderFromPattern;  // F's inverse, for texture displacements; scale 1/s
-};
+/// composes them, so that patterns, textures and mixtures all follow. It
+/// runs for every modifier a ray meets (every sky ray): outside instances it
+/// only refers to the modifier's own transforms, and the inverse is made
+/// only for textures.
+class PatternSpace {
+public:
+    PatternSpace(const TracedRay& ray, const Pattern& modifier) : ray_(ray), modifier_(modifier) {
+        if (ray.objectFromRender) composed_ = Compose(*ray.objectFromRender, modifier.patternFromWorld);
+    }
+    /// F, on row vectors; scale s > 0.
+    const Transform& PatternFromRender() const {
+        return ray_.objectFromRender ? composed_ : modifier_.patternFromWorld;
+    }
+    /// F's inverse, for texture displacements; scale 1/s.
+    Transform RenderFromPattern() const {
+        if (!ray_.objectFromRender) return modifier_.worldFromPattern;
+        return Compose(modifier_.worldFromPattern, Inverse(*ray_.objectFromRender));
+    }
 
-PatternSpace PatternSpaceOf(const TracedRay& ray, const Pattern& modifier) {
-    if (!ray.objectFromRender) return {modifier.patternFromWorld, modifier.worldFromPattern};
-    return {Compose(*ray.objectFromRender, modifier.patternFromWorld),
-            Compose(modifier.worldFromPattern, Inverse(*ray.objectFromRender))};
-}
+private:
+    const TracedRay& ray_;
+    const Pattern& modifier_;
+    Transform composed_;  // set inside instances only
+};
 
 /// The ray quantities $1 … $27 of `ray` in a modifier's space (§10.3).
 class PatternChannels final : public cal::ChannelSource {
 public:
     PatternChannels(const TracedRay& ray, const PatternSpace& space)
-        : ray_(ray), f_(space.patternFromRender), s_(space.patternFromRender.scale) {}
+        : ray_(ray), f_(space.PatternFromRender()), s_(f_.scale) {}
 
     double Channel(int n) const override {
         using namespace cal;
@@ -91,7 +104,7 @@ bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modi
     const cal::Program& functions = *scene_.functions;
     for (const int index : modifiers) {
         const Pattern& modifier = scene_.patterns[static_cast<std::size_t>(index)];
-        const PatternSpace space = PatternSpaceOf(ray, modifier);
+        const PatternSpace space(ray, modifier);
         // Mixtures recurse into ApplyModifiers through ShadeChain, so the
         // context is set up afresh for each modifier.
         cal::Context& context = *functionContext_;
@@ -135,7 +148,7 @@ bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modi
             }
             case ModifierKind::Texture: {
                 // Turned into render space; its length is not scaled (§11.8).
-                const Transform& back = space.renderFromPattern;
+                const Transform back = space.RenderFromPattern();
                 ray.pert += back.Vector(Vec3(v[0], v[1], v[2])) / back.scale;
                 break;
             }
