@@ -4,7 +4,8 @@
 # octree placed 1000 times. Each scene is loaded and traced with a single ray;
 # /usr/bin/time -v gives the wall time and the peak resident memory. With
 # instancing both should stay flat as the count grows: one copy of the mesh
-# plus the instance table.
+# plus the instance table. Real Radiance's rtrace runs on the same scenes
+# (octrees made by its oconv, not timed), for comparison in the same run.
 #   bench/instances.sh LAZYRAD_RTRACE [RADIANCE_DIR]
 # The mesh is made with real Radiance's obj2mesh (a benchmark may use it; the
 # build and the tests never do).
@@ -33,13 +34,18 @@ place() {  # place COUNT TYPE FILE
 }
 printf 'void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey mesh m 1 sheet.rtm 0 0\n' > sheet_inst.rad
 "$rad/bin/oconv" -f sheet_inst.rad > sheet_inst.oct
-echo "| scene | load + one ray (s) | peak memory (MB) |"
-echo "|---|---|---|"
+measure() {  # measure COMMAND... -> "seconds megabytes" of one ray through it
+  echo "20 20 10 0 0 -1" | RAYPATH=.:$rad/lib /usr/bin/time -v "$@" > /dev/null 2> time.txt
+  awk -F': ' '/Elapsed \(wall clock\)/ { n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i] }
+    /Maximum resident set size/ { m = $2 / 1024 } END { printf "%s %.0f", s, m }' time.txt
+}
+echo "| scene | lazyrad: load + one ray (s) | peak memory (MB) | Radiance: rtrace on oconv's octree (s) | peak memory (MB) |"
+echo "|---|---|---|---|---|"
 for case in "1 mesh sheet.rtm" "10 mesh sheet.rtm" "1000 mesh sheet.rtm" "1000 instance sheet_inst.oct"; do
   set -- $case
   { echo "$head_scene"; place "$1" "$2" "$3"; } > scene.rad
-  echo "20 20 10 0 0 -1" | RAYPATH=. /usr/bin/time -v "$lz" -h -ab 0 scene.rad > /dev/null 2> time.txt
-  wall=$(awk -F': ' '/Elapsed \(wall clock\)/ { n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s }' time.txt)
-  mem=$(awk -F': ' '/Maximum resident set size/ { printf "%.0f", $2 / 1024 }' time.txt)
-  echo "| $1 x $2 of $3 | $wall | $mem |"
+  "$rad/bin/oconv" scene.rad > scene.oct
+  read -r lt lm <<< "$(measure "$lz" -h -ab 0 scene.rad)"
+  read -r rt rm <<< "$(measure "$rad/bin/rtrace" -h -ab 0 scene.oct)"
+  echo "| $1 x $2 of $3 | $lt | $lm | $rt | $rm |"
 done
