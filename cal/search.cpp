@@ -20,16 +20,6 @@ bool IsRegularFile(const std::string& path) {
     return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
 }
 
-std::optional<SourceText> ReadIfPresent(const std::string& path) {
-    if (!IsRegularFile(path)) return std::nullopt;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) ThrowSystemError("cannot open function file \"" + path + "\"");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) ThrowSystemError("cannot read function file \"" + path + "\"");
-    return SourceText{path, text.str()};
-}
-
 std::string Join(const std::string& dir, std::string_view name) {
     if (dir.empty()) return std::string(name);
     return dir.back() == '/' ? dir + std::string(name) : dir + "/" + std::string(name);
@@ -53,22 +43,38 @@ SearchPath SearchPath::FromEnvironment() {
     return FromRaypath(raypath != nullptr ? raypath : ":/usr/local/lib/ray");
 }
 
-std::optional<SourceText> FindFunctionFile(std::string_view name, const SearchPath& path) {
+std::optional<std::string> FindFilePath(std::string_view name, const SearchPath& path) {
     if (name.empty()) return std::nullopt;
+    const auto present = [](std::string candidate) -> std::optional<std::string> {
+        if (IsRegularFile(candidate)) return candidate;
+        return std::nullopt;
+    };
     // Radiance's getpath(): absolute names and names starting with '.' or '~'
     // are taken as they are.
-    if (name.front() == '/' || name.front() == '.') return ReadIfPresent(std::string(name));
+    if (name.front() == '/' || name.front() == '.') return present(std::string(name));
     if (name.front() == '~') {
         const std::size_t slash = name.find('/');
         const char* home = std::getenv("HOME");
-        if (slash != 1 || home == nullptr) return ReadIfPresent(std::string(name));
-        return ReadIfPresent(std::string(home) + std::string(name.substr(1)));
+        if (slash != 1 || home == nullptr) return present(std::string(name));
+        return present(std::string(home) + std::string(name.substr(1)));
     }
     for (const std::string& dir : path.entries) {
-        if (auto found = ReadIfPresent(Join(dir, name))) return found;
+        if (auto found = present(Join(dir, name))) return found;
     }
     for (const std::string& dir : path.fallbackDirs) {
-        if (auto found = ReadIfPresent(Join(dir, name))) return found;
+        if (auto found = present(Join(dir, name))) return found;
+    }
+    return std::nullopt;
+}
+
+std::optional<SourceText> FindFunctionFile(std::string_view name, const SearchPath& path) {
+    if (const std::optional<std::string> found = FindFilePath(name, path)) {
+        std::ifstream in(*found, std::ios::binary);
+        if (!in) ThrowSystemError("cannot open function file \"" + *found + "\"");
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (in.bad()) ThrowSystemError("cannot read function file \"" + *found + "\"");
+        return SourceText{*found, text.str()};
     }
     if (path.builtins) {
         if (const std::optional<std::string_view> text = FindBuiltinFile(name)) {

@@ -32,6 +32,11 @@ struct SourceText {
     std::string text;
 };
 
+/// Radiance's getpath(): the first regular file `name` on `path` (its
+/// entries, then its fallback directories; not the built-in files). Names
+/// that are absolute or start with '.' or '~' are used as given.
+std::optional<std::string> FindFilePath(std::string_view name, const SearchPath& path);
+
 /// Reads `name` from the first place on `path` that has it. Names that are
 /// absolute or start with '.' or '~' are used as given, not searched.
 /// std::nullopt when it is nowhere; a file that exists but cannot be read

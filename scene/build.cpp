@@ -6,7 +6,6 @@
 // oconv's bounding cube (oconv.c, bbox.c).
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -150,25 +149,6 @@ struct Placement {
 /// multiplies the counts of each level, and a few lines of scene can ask for
 /// more instances than memory holds.
 constexpr std::size_t kMaxInstances = 10'000'000;
-
-/// The first place on RAYPATH holding the regular file `name` (names that
-/// are absolute or start with '.' are used as given), as Radiance's getpath().
-std::optional<std::string> FindOnPath(const std::string& name, const cal::SearchPath& path) {
-    const auto regular = [](const std::string& p) {
-        std::error_code ec;
-        return std::filesystem::is_regular_file(p, ec);
-    };
-    if (name.empty()) return std::nullopt;
-    if (name[0] == '/' || name[0] == '.') {
-        if (regular(name)) return name;
-        return std::nullopt;
-    }
-    for (const std::string& dir : path.entries) {
-        const std::string candidate = dir.empty() ? name : dir + "/" + name;
-        if (regular(candidate)) return candidate;
-    }
-    return std::nullopt;
-}
 
 class SceneBuilder {
 public:
@@ -575,7 +555,7 @@ private:
             return it->second;
         }
         if (!options_.readFiles) Fail(object, "files disabled");
-        const auto path = FindOnPath(file, searchPath_);
+        const auto path = cal::FindFilePath(file, searchPath_);
         if (!path) {
             ThrowSystemError(object.loc.ToString() + ": cannot find " +
                              (mesh ? "mesh" : "octree") + " file \"" + PrintableWord(file) + "\"");
