@@ -57,6 +57,14 @@ std::string LogPath(const StressConfig& c, int writer) {
 
 std::string FilePath(const StressConfig& c) { return c.directory + "/stress.amb"; }
 
+/// Writers with certain faults (StressConfig::certainFaultsEvery).
+bool HasCertainFault(const StressConfig& c, int writer) {
+    return c.certainFaultsEvery > 0 && writer % c.certainFaultsEvery == 0;
+}
+bool CertainFaultIsDeath(const StressConfig& c, int writer) {
+    return HasCertainFault(c, writer) && (writer / c.certainFaultsEvery) % 2 == 1;
+}
+
 AmbientHeaderParams Params() {
     AmbientHeaderParams p;
     p.bounces = 1;
@@ -86,7 +94,13 @@ AmbientHeaderParams Params() {
         });
         SharedAmbientFile::WriteFaults faults;
         bool dieInShortWrite = false;
+        bool certainFaultDue = HasCertainFault(c, writer);
         faults.keepBytes = [&](std::size_t n) -> std::size_t {
+            if (certainFaultDue) {
+                certainFaultDue = false;
+                dieInShortWrite = CertainFaultIsDeath(c, writer);
+                return n / 2;
+            }
             if (uniform(rng) >= c.shortWriteChance) return n;
             dieInShortWrite = uniform(rng) < 0.5;
             return static_cast<std::size_t>(uniform(rng) * static_cast<double>(n));
@@ -150,6 +164,7 @@ StressResult RunAmbientFileStress(const StressConfig& c) {
     std::mt19937_64 rng(c.seed);
     std::uniform_real_distribution<double> uniform(0, 1);
     std::set<pid_t> running;
+    std::set<pid_t> spared;  // never SIGKILLed by the driver
     std::set<pid_t> killed;
     int started = 0;
     auto reap = [&](bool block) {
@@ -158,6 +173,7 @@ StressResult RunAmbientFileStress(const StressConfig& c) {
             const pid_t pid = waitpid(-1, &st, block ? 0 : WNOHANG);
             if (pid <= 0) return;
             running.erase(pid);
+            spared.erase(pid);
             const bool ours = killed.erase(pid) > 0;
             if (WIFEXITED(st) && WEXITSTATUS(st) != 0) ++result.otherFailures;
             if (WIFSIGNALED(st) && WTERMSIG(st) != SIGKILL) ++result.otherFailures;
@@ -173,13 +189,14 @@ StressResult RunAmbientFileStress(const StressConfig& c) {
             if (pid < 0) throw Error(Error::Kind::System, "stress test: fork failed");
             if (pid == 0) Writer(c, started);
             running.insert(pid);
+            if (HasCertainFault(c, started)) spared.insert(pid);
             ++started;
         }
         std::this_thread::sleep_for(std::chrono::duration<double>(kTickSeconds));
         if (!running.empty() && uniform(rng) < c.killsPerSecond * kTickSeconds) {
             auto it = running.begin();
             std::advance(it, static_cast<long>(uniform(rng) * static_cast<double>(running.size())));
-            if (killed.insert(*it).second) kill(*it, SIGKILL);
+            if (!spared.contains(*it) && killed.insert(*it).second) kill(*it, SIGKILL);
         }
         reap(false);
     }

@@ -25,6 +25,7 @@ TEST(AmbientFileStress, WritersKilledAndShortWritesLoseNoSyncedRecord) {
     c.killsPerSecond = 100;
     c.shortWriteChance = 0.08;
     c.seed = 18;
+    c.certainFaultsEvery = 8;  // 5 writers: 3 full disks and 2 deaths for certain
     const testing::StressResult r = testing::RunAmbientFileStress(c);
     std::printf("%s\n", r.ToString().c_str());
     EXPECT_TRUE(r.Ok()) << r.ToString();
