@@ -57,11 +57,14 @@ public:
         : scene_(std::move(scene)), core_(scene_), warn_(warn) {
         cache_ = Renderer::MakeCache(scene_, options.ambient);
         const int threads = std::max(1, options.processes);
+        // Set-up warnings ("no light sources found") once, not per thread.
+        const auto shared =
+            Renderer::Share(scene_, core_, options.shading, options.ambient, warn, cache_);
         for (int i = 0; i < threads; ++i) {
-            // Set-up warnings ("no light sources found") once, not per thread.
-            renderers_.push_back(std::make_unique<Renderer>(
-                scene_, core_, options.shading, options.ambient, i == 0 ? warn : WarningSink(),
-                cache_));
+            // Warnings while tracing come from the first thread only, so
+            // that threads do not write to the sink at once.
+            renderers_.push_back(
+                std::make_unique<Renderer>(shared, i == 0 ? warn : WarningSink()));
             // -t asks for the report, which then says where the time went.
             renderers_.back()->EnableTiming(options.reportSeconds > 0);
         }

@@ -2,12 +2,14 @@
 //
 // Radiance's direct calculation (source.c direct(), srcvalue(), raycont() for
 // shadow rays); radiance-notes.md §3.3–3.4.
+#include "shading/direct.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
-#include "shading/integrator.h"
+#include "shading/ray_tree.h"
 
 namespace rt {
 namespace {
@@ -54,9 +56,10 @@ void SortBrightestFirst(std::vector<Contribution>& c, std::vector<Contribution>&
 
 }  // namespace
 
-Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
-    const LightSource& src = sources_[source];
-    const Surface& surface = scene_.surfaces[src.surface];
+Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
+                             double distance) const {
+    const LightSource& src = s_.sources[source];
+    const Surface& surface = s_.scene.surfaces[src.surface];
     if (src.shape == LightSource::Shape::Distant) {
         // Samples of a distant source lie inside its cone by construction.
         sray.SetDistantHit(src.surface);
@@ -70,94 +73,78 @@ Rgb Integrator::SourceValue(TracedRay& sray, int source, double distance) {
         sray.geometricNormal = src.normal;
         sray.rod = -Dot(sray.dir, src.normal);
     } else {
-        auto hit = core_.IntersectSurface(src.surface, sray.org, sray.dir);
-        LightSource& aimed = sources_[source];
+        auto hit = s_.core.IntersectSurface(src.surface, sray.org, sray.dir);
+        SourceTally& aimed = ts.sourceTallies[source];
         if (!hit) {
             // The sample missed the source (a partition of a non-parallelogram
             // polygon reaching past its edge, or rounding at grazing angles).
             if (aimed.aimSuccess >= 0) {
-                aimed.aimSuccess -= LightSource::kAimRequired;
-                if (aimed.aimSuccess < 0 && warn_) {
-                    warn_("aiming failure for light source \"" + surface.name + "\"");
+                aimed.aimSuccess -= SourceTally::kAimRequired;
+                if (aimed.aimSuccess < 0) {
+                    ts.Warn("aiming failure for light source \"" + surface.name + "\"");
                 }
             }
             return Rgb();
         }
         if (aimed.aimSuccess < 0) {
             aimed.aimSuccess = 1;  // warn again at the next failure
-        } else if (aimed.aimSuccess < LightSource::kAimCredit) {
+        } else if (aimed.aimSuccess < SourceTally::kAimCredit) {
             ++aimed.aimSuccess;
         }
-        sray.SetHit(*hit, scene_.PatternSpace(hit->instance));
+        sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
     }
     sray.rcol = Rgb();
-    if (!ApplyModifiers(sray, surface.patterns)) {
-        ShadeMaterial(sray, scene_.materials[surface.material]);
+    if (!tree_.ApplyModifiers(ts, sray, surface.patterns)) {
+        tree_.ShadeMaterial(ts, sray, s_.scene.materials[surface.material]);
     }
     return sray.rcol;
 }
 
-void Integrator::ContinueShadowRay(TracedRay& sray) {
-    sray.rcol = Rgb();
-    Shade(sray);
-    Report(sray);
-}
-
-void Integrator::EnableTiming(bool on) {
-    timing_ = on;
-    if (!on) return;
-    // The fastest of a few back-to-back reads: the clock's own cost.
-    double fastest = 1.0;
-    for (int i = 0; i < 64; ++i) {
-        const auto a = std::chrono::steady_clock::now();
-        const auto b = std::chrono::steady_clock::now();
-        fastest = std::min(fastest, std::chrono::duration<double>(b - a).count());
-    }
-    clockReadSeconds_ = fastest;
-}
-
-void Integrator::Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) {
-    if (sources_.empty()) return;
-    if (!timing_) {
-        DirectUntimed(ray, coef);
+void DirectLight::Add(ThreadState& ts, TracedRay& ray,
+                      FunctionRef<Rgb(const Vec3&, double)> coef) const {
+    if (s_.sources.empty()) return;
+    if (!ts.timing) {
+        AddUntimed(ts, ray, coef);
         return;
     }
-    // Reading the clock twice around each of a run's millions of calls cost
-    // 11 % of a cornell -ab 2 run (3.47-3.55 s instead of 3.11-3.15 s), so
-    // every kDirectTimingStride-th call is timed and stands for the others.
-    timing_ = false;  // calls nested in this one are part of it
-    if (++directCalls_ % kDirectTimingStride == 0) {
+    // Reading the clock twice around each of a run's millions of calls would
+    // cost a noticeable share of the run, so every kDirectTimingStride-th
+    // call is timed and stands for the others.
+    ts.timing = false;  // calls nested in this one are part of it
+    if (++ts.directCalls % ThreadState::kDirectTimingStride == 0) {
         const auto start = std::chrono::steady_clock::now();
-        DirectUntimed(ray, coef);
+        AddUntimed(ts, ray, coef);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats_.secondsDirect += kDirectTimingStride * std::max(0.0, seconds - clockReadSeconds_);
+        ts.stats.secondsDirect +=
+            ThreadState::kDirectTimingStride * std::max(0.0, seconds - ts.clockReadSeconds);
     } else {
-        DirectUntimed(ray, coef);
+        AddUntimed(ts, ray, coef);
     }
-    timing_ = true;
+    ts.timing = true;
 }
 
-void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) {
+void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
+                             FunctionRef<Rgb(const Vec3&, double)> coef) const {
     // Direct() is not re-entered while it runs, but keep one scratch set per
     // depth so that a future material that shades inside a shadow path
     // cannot clobber a caller's buffers.
-    if (directScratch_.size() <= static_cast<size_t>(directDepth_)) {
-        directScratch_.resize(directDepth_ + 1);
+    if (ts.directScratch.size() <= static_cast<size_t>(ts.directDepth)) {
+        ts.directScratch.resize(ts.directDepth + 1);
     }
-    DirectScratch& scratch = directScratch_[directDepth_];
-    ++directDepth_;
+    DirectScratch& scratch = ts.directScratch[ts.directDepth];
+    ++ts.directDepth;
     struct DepthGuard {
         int& depth;
         ~DepthGuard() { --depth; }
-    } guard{directDepth_};
+    } guard{ts.directDepth};
 
     // Radiance's deterministic partition centres (-dj 0), also for rays of
     // the indirect calculation: jittering them there converges to the exact
     // integral, which differs from Radiance's own converged answers by up to
-    // 6 % in the cornell box's penumbrae (0.92 % RMS against its reference
-    // floor instead of 0.61 %); lazyrad's contract is Radiance's answer.
-    CollectSourceSamples(sources_, ray.rop, ray.sourceWeight, shading_.direct, rng_,
+    // several per cent in the cornell box's penumbrae (README, Differences);
+    // lazyrad's contract is Radiance's answer.
+    CollectSourceSamples(s_.sources, ray.rop, ray.sourceWeight, s_.shading.direct, ts.rng,
                          scratch.samples, scratch.partitions);
     if (scratch.samples.empty()) return;
 
@@ -170,21 +157,21 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         c.distance = s.distance;
         c.coef = coef(s.dir, s.omega);
         if (Bright(c.coef) <= 0.0) continue;
-        const LightSource& src = sources_[s.source];
+        const LightSource& src = s_.sources[s.source];
         if ((src.shape == LightSource::Shape::Distant || src.parallelogram) && !src.patterned) {
             // The sample lands on the source: its radiance is the material's
             // colour from the front (spot cones and proximity were checked
             // when sampling), black from behind.
             const bool front = src.shape == LightSource::Shape::Distant ||
                                Dot(s.dir, src.normal) < 0.0;
-            const Rgb& color = std::get<LightParams>(scene_.materials[src.material].params).color;
+            const Rgb& color = std::get<LightParams>(s_.scene.materials[src.material].params).color;
             c.value = front ? color * c.coef : Rgb();
         } else {
             TracedRay sray;
-            StartChild(sray, ray, kShadowRay, nullptr);
+            tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);
             sray.dir = s.dir;
             sray.rsrc = s.source;
-            c.value = SourceValue(sray, s.source, s.distance) * c.coef;
+            c.value = SourceValue(ts, sray, s.source, s.distance) * c.coef;
             // The shadow ray must stop where it enters the source's surface,
             // not at the sample point: a sphere's or cylinder's sample points
             // lie inside it, behind its own surface, which an any-hit query
@@ -203,10 +190,10 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
     for (int k = n - 1; k >= 0; --k) tail[k] = tail[k + 1] + contribs[k].bright;
 
     const int nshadcheck =
-        n < static_cast<int>(shadowCheckCounts_.size())
-            ? shadowCheckCounts_[n]
-            : static_cast<int>(std::pow(double(n), shading_.direct.certainty) + 0.5);
-    const double threshold = shading_.direct.threshold / ray.rweight;
+        n < static_cast<int>(s_.shadowCheckCounts.size())
+            ? s_.shadowCheckCounts[n]
+            : static_cast<int>(std::pow(double(n), s_.shading.direct.certainty) + 0.5);
+    const double threshold = s_.shading.direct.threshold / ray.rweight;
     int nhits = 0;
     double hwt = 0.0;
     int k = 0;
@@ -216,26 +203,27 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         double remaining = k + nshadcheck >= n ? tail[k] : tail[k] - tail[k + nshadcheck];
         if (k >= kMinShadowTests && remaining < threshold * Bright(ray.rcol)) break;
         DirectContribution& c = contribs[k];
-        LightSource& src = sources_[c.source];
-        src.ntests++;
-        ++stats_.shadowRays;
-        if (opaqueShadows_ && !traceShadows_) {
+        const LightSource& src = s_.sources[c.source];
+        SourceTally& tally = ts.sourceTallies[c.source];
+        tally.ntests++;
+        ++ts.stats.shadowRays;
+        if (s_.opaqueShadows && !ts.traceShadows) {
             // Nothing in this scene transmits light, so any hit before the
             // source blocks it: an any-hit query is enough.
             // Stop just short of the sample point on the source itself.
             const double reach = src.shape == LightSource::Shape::Distant
                                      ? 0.0
-                                     : c.distance - std::max(scene_.distanceTolerance, 1e-7 * c.distance);
-            if (!core_.Occluded(ray.rop, c.dir, reach)) {
+                                     : c.distance - std::max(s_.scene.distanceTolerance, 1e-7 * c.distance);
+            if (!s_.core.Occluded(ray.rop, c.dir, reach)) {
                 ray.rcol += c.value;
                 nhits++;
-                src.nhits++;
+                tally.nhits++;
             }
-            hwt += double(src.nhits) / double(src.ntests);
+            hwt += double(tally.nhits) / double(tally.ntests);
             continue;
         }
         TracedRay sray;
-        StartChild(sray, ray, kShadowRay, nullptr);
+        tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);
         sray.dir = c.dir;
         sray.rsrc = c.source;
         sray.rcoef = c.coef;
@@ -243,10 +231,13 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         // Something in between is followed through (opaque materials return
         // black, transparent ones transmit); with -oT every shadow ray is
         // followed so that it can be reported, as Radiance's SFOLLOW flag does.
-        if (auto hit = core_.Intersect(sray.org, sray.dir, 0.0);
-            hit && (hit->instance >= 0 || hit->surface != src.surface || traceShadows_)) {
-            sray.SetHit(*hit, scene_.PatternSpace(hit->instance));
-            ContinueShadowRay(sray);
+        if (auto hit = s_.core.Intersect(sray.org, sray.dir, 0.0);
+            hit && (hit->instance >= 0 || hit->surface != src.surface || ts.traceShadows)) {
+            sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
+            // Shaded past the surface in between (Radiance's raycont()).
+            sray.rcol = Rgb();
+            tree_.Shade(ts, sray);
+            tree_.Report(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;
             } else {
@@ -256,15 +247,15 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
         if (!blocked) {
             ray.rcol += c.value;
             nhits++;
-            src.nhits++;
+            tally.nhits++;
         }
-        hwt += double(src.nhits) / double(src.ntests);
+        hwt += double(tally.nhits) / double(tally.ntests);
     }
     hwt = hwt > kFtiny ? nhits / hwt : 0.5;
     for (; k < n; ++k) {
         const DirectContribution& c = contribs[k];
-        const LightSource& src = sources_[c.source];
-        double prob = std::min(1.0, hwt * double(src.nhits) / double(src.ntests));
+        const SourceTally& tally = ts.sourceTallies[c.source];
+        double prob = std::min(1.0, hwt * double(tally.nhits) / double(tally.ntests));
         ray.rcol += c.value * prob;
     }
 }

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 //
-// The indirect term: Radiance's multambient() (radiance-notes.md §4.1) on top
-// of the lazy irradiance cache in ambient/: interpolate where records are
-// good enough, otherwise sample a new hemisphere and keep it as a record.
+#include "shading/indirect.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "ambient/leak.h"
-#include "shading/integrator.h"
+#include "shading/ray_tree.h"
 
 namespace rt {
 namespace {
@@ -24,26 +23,26 @@ constexpr double kAverageReflectance = 0.5;
 
 }  // namespace
 
-bool Integrator::AmbientExcluded(const TracedRay& ray) const {
-    if (ambientList_.empty() && !ambient_.listIsInclude) return false;
+bool IndirectLight::Excluded(const TracedRay& ray) const {
+    if (s_.ambientList.empty() && !s_.ambient.listIsInclude) return false;
     if (ray.surface < 0 || ray.hitDistant) return false;  // -I: no object to test
-    const bool listed = ambientList_.count(scene_.HitSurface(ray.instance, ray.surface).modifierName) > 0;
-    return ambient_.listIsInclude ? !listed : listed;
+    const bool listed = s_.ambientList.count(s_.scene.HitSurface(ray.instance, ray.surface).modifierName) > 0;
+    return s_.ambient.listIsInclude ? !listed : listed;
 }
 
-Rgb Integrator::AmbientFallback(const Rgb& coefficient) const {
-    if (!cache_) return coefficient * ambient_.value;
-    if (ambient_.valueWeight <= 0) return coefficient * ambient_.value;
-    const AmbientCache::LogBrightSum s = cache_->logBright();
-    return coefficient * AveragedAmbientValue(ambient_.value, ambient_.valueWeight, s.sum, s.count);
+Rgb IndirectLight::Fallback(const Rgb& coefficient) const {
+    if (!s_.cache) return coefficient * s_.ambient.value;
+    if (s_.ambient.valueWeight <= 0) return coefficient * s_.ambient.value;
+    const AmbientCache::LogBrightSum s = s_.cache->logBright();
+    return coefficient * AveragedAmbientValue(s_.ambient.value, s_.ambient.valueWeight, s.sum, s.count);
 }
 
-Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficient,
-                                     double weight) {
-    const bool caching = cache_ != nullptr;
+Hemisphere IndirectLight::Sample(ThreadState& ts, const TracedRay& ray, const Rgb& coefficient,
+                                  double weight) const {
+    const bool caching = s_.cache != nullptr;
     HemisphereOptions options;
-    options.divisions = ambient_.divisions;
-    options.superSamples = ambient_.superSamples;
+    options.divisions = s_.ambient.divisions;
+    options.superSamples = s_.ambient.superSamples;
     options.weight = weight;
     options.caching = caching;
     const DivisionCounts counts = HemisphereDivisions(options);
@@ -54,12 +53,12 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
     const Vec3 point = ray.rop;
     // Timing: only the outermost hemisphere counts (deeper ones are inside
     // it), less what its samples spend in direct lighting and lookups.
-    const bool timeThis = timing_ && ambientDepth_ == 0;
+    const bool timeThis = ts.timing && ts.ambientDepth == 0;
     const double start = timeThis ? Now() : 0.0;
-    const double directBefore = stats_.secondsDirect, lookupBefore = stats_.secondsLookup;
-    ++ambientDepth_;
-    ++stats_.hemispheres;
-    Hemisphere h = SampleHemisphere(ray.ron, options, rng_, [&](const Vec3& dir)
+    const double directBefore = ts.stats.secondsDirect, lookupBefore = ts.stats.secondsLookup;
+    ++ts.ambientDepth;
+    ++ts.stats.hemispheres;
+    Hemisphere h = SampleHemisphere(ray.ron, options, ts.rng, [&](const Vec3& dir)
                                         -> std::optional<AmbientSample> {
         // Hemisphere samples never go to Russian roulette, with or without
         // the cache; only -lr's depth cap refuses them. Their number is
@@ -72,10 +71,10 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         // noise multiplicatively down 40 levels (a rho 0.999 box 62 % dark
         // for most seeds at -ar 4 -ab 50).
         TracedRay child;
-        StartChild(child, ray, kAmbientRay, nullptr);
+        tree_.StartChild(ts, child, ray, kAmbientRay, nullptr);
         child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
         child.rcoef = sampleCoef;
-        const int lr = shading_.limits.reflections;
+        const int lr = s_.shading.limits.reflections;
         if (lr != 0 && child.rlvl > std::abs(lr)) return std::nullopt;
         // Light sources seen from the sample's hit are subdivided (-ds) for
         // the path's real importance: the cache's nominal 0.5 would halve the
@@ -85,76 +84,78 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         child.sourceWeight = ray.sourceWeight * std::fmin(1.0, Intens(coefficient));
         child.org = point;
         child.dir = dir;
-        Trace(child);
+        tree_.Trace(ts, child);
         const double dist = child.EffectiveDistance();
-        if (!(dist > scene_.distanceTolerance)) return std::nullopt;
+        if (!(dist > s_.scene.distanceTolerance)) return std::nullopt;
         return AmbientSample{child.rcol, dist};
     });
-    --ambientDepth_;
+    --ts.ambientDepth;
     if (timeThis) {
-        stats_.secondsSampling += (Now() - start) - (stats_.secondsDirect - directBefore) -
-                                  (stats_.secondsLookup - lookupBefore);
+        ts.stats.secondsSampling += (Now() - start) - (ts.stats.secondsDirect - directBefore) -
+                                  (ts.stats.secondsLookup - lookupBefore);
     }
     return h;
 }
 
-void Integrator::NoteAmbient(RayResult::AmbientOutcome outcome, const Rgb& meanRadiance) {
-    if (firstAmbientSeen_ || ambientDepth_ != 0) return;
-    firstAmbientSeen_ = true;
-    firstOutcome_ = outcome;
-    firstIndirectIrradiance_ = meanRadiance * kPi;
+void IndirectLight::Note(ThreadState& ts, RayResult::AmbientOutcome outcome,
+                         const Rgb& meanRadiance) {
+    if (ts.firstAmbientSeen || ts.ambientDepth != 0) return;
+    ts.firstAmbientSeen = true;
+    ts.firstOutcome = outcome;
+    ts.firstIndirectIrradiance = meanRadiance * kPi;
 }
 
-Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3& normal) {
+Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const TracedRay& ray,
+                           const Vec3& normal) const {
     using Outcome = RayResult::AmbientOutcome;
-    if (ambient_.divisions <= 0 || ambientDepth_ >= ambient_.bounces || AmbientExcluded(ray) ||
+    if (s_.ambient.divisions <= 0 || ts.ambientDepth >= s_.ambient.bounces || Excluded(ray) ||
         Bright(coefficient) <= kFtiny) {
-        const Rgb value = AmbientFallback(coefficient);
-        if (ambient_.bounces > 0) NoteAmbient(Outcome::Fallback, AmbientFallback(Rgb(1, 1, 1)));
+        const Rgb value = Fallback(coefficient);
+        if (s_.ambient.bounces > 0) Note(ts, Outcome::Fallback, Fallback(Rgb(1, 1, 1)));
         return value;
     }
-    if (!cache_) {
+    if (!s_.cache) {
         // -aa 0: a fresh hemisphere for every shading point, sized by the
         // ray's weight so that sample rays stay near -lw.
         double weight = ray.rweight;
-        const double lw = shading_.limits.weight;
+        const double lw = s_.shading.limits.weight;
         if (lw > 0) {
             weight = std::min(weight, 0.8 * Intens(coefficient) * ray.rweight /
-                                          (std::max(ambient_.divisions, 1) * lw));
+                                          (std::max(s_.ambient.divisions, 1) * lw));
         }
-        Hemisphere h = SampleAmbient(ray, coefficient, weight);
-        if (!h.anySample) return AmbientFallback(coefficient);
-        NoteAmbient(Outcome::Computed, h.value);
+        Hemisphere h = Sample(ts, ray, coefficient, weight);
+        if (!h.anySample) return Fallback(coefficient);
+        Note(ts, Outcome::Computed, h.value);
         return coefficient * h.value;
     }
     AmbientQuery query;
     query.point = ray.rop;
     query.normal = ray.ron;
     query.shadingNormal = normal;
-    query.level = ambientDepth_;
+    query.level = ts.ambientDepth;
     query.rayWeight = ray.rweight;
-    ++stats_.ambientLookups;
+    ++ts.stats.ambientLookups;
     int used = 0;
-    const double lookupStart = timing_ ? Now() : 0.0;
+    const double lookupStart = ts.timing ? Now() : 0.0;
     // Radiance 5's leak test: a record that saw a wall nearby in the query's
     // direction is not used if the wall stands between them.
     const auto hidden = [&](const AmbientRecord& record) {
         if (!CorralCovers(record, query.point)) return false;
         const LeakTest leak = MakeLeakTest(query.point, query.normal, record.position,
-                                           record.normal, scene_.distanceTolerance);
+                                           record.normal, s_.scene.distanceTolerance);
         switch (leak.outcome) {
             case LeakTest::Outcome::kVisible: return false;
             case LeakTest::Outcome::kHidden: return true;
             case LeakTest::Outcome::kTrace: break;
         }
-        ++stats_.leakRays;
-        return core_.Occluded(query.point, leak.dir, leak.length);
+        ++ts.stats.leakRays;
+        return s_.core.Occluded(query.point, leak.dir, leak.length);
     };
-    std::optional<Rgb> interpolated = cache_->Interpolate(query, &used, hidden);
-    if (timing_) stats_.secondsLookup += Now() - lookupStart;
+    std::optional<Rgb> interpolated = s_.cache->Interpolate(query, &used, hidden);
+    if (ts.timing) ts.stats.secondsLookup += Now() - lookupStart;
     if (auto value = interpolated) {
-        ++stats_.ambientHits;
-        NoteAmbient(used > 1 ? Outcome::Interpolated : Outcome::Extrapolated, *value);
+        ++ts.stats.ambientHits;
+        Note(ts, used > 1 ? Outcome::Interpolated : Outcome::Extrapolated, *value);
         return coefficient * *value;
     }
     // A new record at this level: weight 0.5^level, or about the ray's own
@@ -162,29 +163,29 @@ Rgb Integrator::Ambient(const Rgb& coefficient, const TracedRay& ray, const Vec3
     // Russian roulette raises the survivors' weight to -lw, above 0.5^level;
     // the record takes that weight too, or no query at this depth (all
     // carrying -lw) could use it and every one would compute its own.
-    double weight = std::pow(kAverageReflectance, ambientDepth_);
+    double weight = std::pow(kAverageReflectance, ts.ambientDepth);
     if (ray.rweight < 0.1 * weight) weight = 1.25 * ray.rweight;
     weight = std::max(weight, ray.rweight);
-    const int level = ambientDepth_;
-    Hemisphere h = SampleAmbient(ray, coefficient, weight);
+    const int level = ts.ambientDepth;
+    Hemisphere h = Sample(ts, ray, coefficient, weight);
     // No division got a sample (every ray refused, e.g. by -lr): Radiance's
     // makeambient() failure, answered with the ambient value.
-    if (!h.anySample) return AmbientFallback(coefficient);
-    if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, cache_->limits())) {
-        const double a = ambient_.accuracy;
+    if (!h.anySample) return Fallback(coefficient);
+    if (auto record = MakeClassicRecord(ray.rop, ray.ron, h, level, weight, s_.cache->limits())) {
+        const double a = s_.ambient.accuracy;
         record->corral =
-            CorralBits(h, record->radius[0] * a, 1.0 / cache_->limits().BehindTolerance(a));
-        if (cache_->Add(*record)) {
-            newRecords_.push_back(*record);
-            if (stats_.recordsPerLevel.size() <= static_cast<size_t>(level)) {
-                stats_.recordsPerLevel.resize(level + 1);
+            CorralBits(h, record->radius[0] * a, 1.0 / s_.cache->limits().BehindTolerance(a));
+        if (s_.cache->Add(*record)) {
+            ts.newRecords.push_back(*record);
+            if (ts.stats.recordsPerLevel.size() <= static_cast<size_t>(level)) {
+                ts.stats.recordsPerLevel.resize(level + 1);
             }
-            ++stats_.recordsPerLevel[level];
+            ++ts.stats.recordsPerLevel[level];
         }
     }
     // An incomplete hemisphere still gives a usable value; it is just not
     // kept (Radiance's soft failure).
-    NoteAmbient(Outcome::Computed, h.value);
+    Note(ts, Outcome::Computed, h.value);
     return coefficient * h.value;
 }
 

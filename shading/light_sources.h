@@ -37,16 +37,6 @@ struct LightSource {
     double spotFocal = 0;      // focal length behind the source centre
     bool parallelogram = false;  // flat quad whose samples always land on it
     bool patterned = false;      // its radiance comes through patterns, per sample ray
-    // Shadow-test statistics used by direct() to estimate untested samples.
-    long nhits = 1;
-    long ntests = 2;
-    // Radiance's aiming-success count (srcvalue()): a sample ray that hits the
-    // source adds 1 (up to kAimCredit), one that misses it takes kAimRequired;
-    // below zero the warning "aiming failure" is printed, and again after the
-    // next hit and miss.
-    static constexpr int kAimRequired = 100;
-    static constexpr int kAimCredit = 2 * kAimRequired;
-    int aimSuccess = 2 * kAimRequired - 1;
 };
 
 /// One sample direction toward a light source (one per source partition).

@@ -6,13 +6,15 @@
 // dielectric/interface (dielectric.c); radiance-notes.md §2.7–2.8. Each
 // reads its parameters by name (scene.h) and the texture-perturbed normal of
 // raynormal() (raytrace.c) where Radiance does.
+#include "shading/materials.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <string>
 #include <variant>
 
-#include "shading/integrator.h"
+#include "shading/ray_tree.h"
 
 namespace rt {
 namespace {
@@ -35,19 +37,15 @@ bool IsFlat(const Scene& scene, const TracedRay& ray) {
 
 }  // namespace
 
-bool Integrator::Textured(const TracedRay& ray) {
-    return Dot(ray.pert, ray.pert) > kFtiny * kFtiny;
-}
-
-double Integrator::PerturbedNormal(const TracedRay& ray, Vec3& normal) {
+double PerturbedNormal(const Scene& scene, ThreadState& ts, const TracedRay& ray, Vec3& normal) {
     const Vec3 sum = ray.ron + ray.pert;
     const double length = Length(sum);
     if (length == 0.0) {
         // Radiance warns at every call; once per surface is enough to find it.
-        const Surface* s = ray.surface >= 0 ? &scene_.HitSurface(ray.instance, ray.surface) : nullptr;
-        if (s && perturbationWarned_.insert(s).second && warn_) {
-            warn_("illegal normal perturbation for " + std::string(SurfaceTypeName(s->type)) +
-                  " \"" + s->name + "\"");
+        const Surface* s = ray.surface >= 0 ? &scene.HitSurface(ray.instance, ray.surface) : nullptr;
+        if (s && ts.perturbationWarned.insert(s).second) {
+            ts.Warn("illegal normal perturbation for " + std::string(SurfaceTypeName(s->type)) +
+                    " \"" + s->name + "\"");
         }
         normal = ray.ron;
         return ray.rod;
@@ -64,53 +62,29 @@ double Integrator::PerturbedNormal(const TracedRay& ray, Vec3& normal) {
     return pdot;
 }
 
-void Integrator::ShadeMaterial(TracedRay& ray, const Material& m) {
-    // The material's own chain (Radiance's raytexture(m->omod)), before it
-    // computes anything. Mixtures on it cannot reach a material (refused at
-    // load as "conflicting material").
-    ApplyModifiers(ray, m.patterns);
-    // One row per MaterialType, in its order: adding a material is a row
-    // here and a parameter parser in scene/, not a case in every switch.
-    using ShadeFunction = void (Integrator::*)(TracedRay&, const Material&);
-    static constexpr ShadeFunction kShaders[] = {
-        &Integrator::ShadeNormal,      // plastic
-        &Integrator::ShadeNormal,      // metal
-        &Integrator::ShadeNormal,      // trans
-        &Integrator::ShadeLight,       // light
-        &Integrator::ShadeLight,       // illum
-        &Integrator::ShadeLight,       // glow
-        &Integrator::ShadeLight,       // spotlight
-        &Integrator::ShadeMirror,      // mirror
-        &Integrator::ShadeGlass,       // glass
-        &Integrator::ShadeDielectric,  // dielectric
-        &Integrator::ShadeDielectric,  // interface
-    };
-    static_assert(std::size(kShaders) == kMaterialTypeCount);
-    (this->*kShaders[static_cast<std::size_t>(m.type)])(ray, m);
-}
-
-void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
+void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
     const NormalParams& p = std::get<NormalParams>(m.params);
     const bool isTrans = m.type == MaterialType::Trans;
     if ((ray.crtype & kShadowRay) && !isTrans) return;  // opaque to shadow rays
     if (ray.rod < 0.0) {
-        if (!shading_.backfaceVisible && !isTrans) {
-            PassThrough(ray);
+        if (!setup.shading.backfaceVisible && !isTrans) {
+            tree.PassThrough(ts, ray);
             return;
         }
-        FlipSurface(ray);  // two-sided: shade the side facing the ray
+        ray.FlipSurface();  // two-sided: shade the side facing the ray
     }
     const Rgb mcolor = p.color * ray.pcol;
     const double alpha2 = p.roughness * p.roughness;
     const bool pure = alpha2 <= kFtiny;
     // The shading normal N' and its cosine (radiance-notes §2.7 item 4);
     // the unperturbed ron still decides which side a new ray leaves on.
-    const bool textured = Textured(ray);
+    const bool textured = ray.Textured();
     Vec3 pnorm = ray.ron;
     double pdot = ray.rod;
-    if (textured) pdot = PerturbedNormal(ray, pnorm);
+    if (textured) pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
     pdot = std::max(pdot, 0.001);  // non-zero for the direct term
-    const bool flat = IsFlat(scene_, ray);
+    const bool flat = IsFlat(setup.scene, ray);
 
     double rspec = p.specularity;
     double fest = 0.0;
@@ -127,7 +101,7 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
         tdiff = trans - tspec;
         if (tspec > kFtiny) {
             hasSpecTrans = true;
-            transBelowThreshold = !pure && shading_.specular.threshold >= tspec - kFtiny;
+            transBelowThreshold = !pure && setup.shading.specular.threshold >= tspec - kFtiny;
             // A texture bends the transmitted ray too, unless that would
             // send it back out on the ray's side; shadow and ambient rays
             // go straight so that they still reach what they aim at.
@@ -143,9 +117,9 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
     if (hasSpecTrans && pure) {
         Rgb coef = mcolor * tspec;
         TracedRay child;
-        if (StartChild(child, ray, kTransRay, &coef)) {
+        if (tree.StartChild(ts, child, ray, kTransRay, &coef)) {
             child.dir = prdir;
-            Trace(child);
+            tree.Trace(ts, child);
             Rgb c = child.rcol * child.rcoef;
             ray.rcol += c;
             if (tspec >= 1.0 - kFtiny) {
@@ -172,7 +146,7 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
         } else {
             scolor = mcolor * rspec;
         }
-        reflBelowThreshold = !pure && shading_.specular.threshold >= rspec - kFtiny;
+        reflBelowThreshold = !pure && setup.shading.specular.threshold >= rspec - kFtiny;
         vrefl = ray.dir + pnorm * (2.0 * pdot);
         // A perturbed mirror direction below the surface would leave through it.
         if (textured && Dot(vrefl, ray.ron) <= kFtiny) vrefl = ray.dir + ray.ron * (2.0 * ray.rod);
@@ -181,9 +155,9 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
     // Pure specular reflection: a mirror child ray.
     if (hasSpecRefl && pure) {
         TracedRay child;
-        if (StartChild(child, ray, kReflectedRay, &scolor)) {
+        if (tree.StartChild(ts, child, ray, kReflectedRay, &scolor)) {
             child.dir = vrefl;
-            Trace(child);
+            tree.Trace(ts, child);
             Rgb c = child.rcol * child.rcoef;
             ray.rcol += c;
             ray.mcol = c;
@@ -200,9 +174,9 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
     // when above -st; below it, the highlight joins the ambient coefficient.
     if (!pure && hasSpecRefl && !reflBelowThreshold) {
         int n = 1;
-        if (shading_.specular.sampling > 1.5) {
-            n = static_cast<int>(shading_.specular.sampling * ray.rweight + 0.5);
-            const double lw = shading_.limits.weight;
+        if (setup.shading.specular.sampling > 1.5) {
+            n = static_cast<int>(setup.shading.specular.sampling * ray.rweight + 0.5);
+            const double lw = setup.shading.limits.weight;
             if (lw > 0) n = std::min(n, std::max(1, static_cast<int>(ray.rweight * Intens(scolor) / lw)));
             n = std::max(n, 1);
         }
@@ -212,18 +186,18 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
         Rgb sum;
         int tries = 0, done = 0;
         for (; done < n && tries < kMaxSpecularTries * n; ++tries) {
-            double phi = 2.0 * kPi * rng_.Uniform();
-            double r2 = rng_.Uniform();
-            double ss = shading_.specular.sampling;
+            double phi = 2.0 * kPi * ts.rng.Uniform();
+            double r2 = ts.rng.Uniform();
+            double ss = setup.shading.specular.sampling;
             if (ss >= 0 && ss < 1.0) r2 = 1.0 - ss * r2;
             double d = r2 <= kFtiny ? 1.0 : std::sqrt(alpha2 * -std::log(r2));
             Vec3 h = pnorm + (u * std::cos(phi) + v * std::sin(phi)) * d;
             Vec3 sdir = ray.dir - h * (2.0 * Dot(h, ray.dir) / (1.0 + d * d));
             if (Dot(sdir, ray.ron) <= kFtiny) continue;
             TracedRay child;
-            if (!StartChild(child, ray, kSpecularRay, &coef)) break;
+            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
             child.dir = Normalize(sdir);
-            Trace(child);
+            tree.Trace(ts, child);
             Rgb c = child.rcol * child.rcoef;
             if (n > 1) c *= 2.0 / (1.0 + ray.rod / std::max(Dot(child.dir, pnorm), kFtiny));
             sum += c;
@@ -237,19 +211,19 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
         const Vec3 u = Perpendicular(pnorm);
         const Vec3 v = Cross(pnorm, u);
         for (int tries = 0; tries < kMaxSpecularTries; ++tries) {
-            double phi = 2.0 * kPi * rng_.Uniform();
-            double r2 = rng_.Uniform();
+            double phi = 2.0 * kPi * ts.rng.Uniform();
+            double r2 = ts.rng.Uniform();
             // -ss below 1 narrows the lobe as for reflection; at 1, 1 - r2
             // would only be another uniform number.
-            const double ss = shading_.specular.sampling;
+            const double ss = setup.shading.specular.sampling;
             if (ss >= 0 && ss < 1.0) r2 = 1.0 - ss * r2;
             double d = r2 <= kFtiny ? 1.0 : std::sqrt(alpha2 * -std::log(r2));
             Vec3 sdir = prdir + (u * std::cos(phi) + v * std::sin(phi)) * d;
             if (Dot(sdir, ray.ron) >= -kFtiny) continue;
             TracedRay child;
-            if (!StartChild(child, ray, kSpecularRay, &coef)) break;
+            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
             child.dir = Normalize(sdir);
-            Trace(child);
+            tree.Trace(ts, child);
             ray.rcol += child.rcol * child.rcoef;
             break;
         }
@@ -259,14 +233,14 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
     if (rdiff > kFtiny) {
         Rgb a = mcolor * rdiff;
         if (reflBelowThreshold) a += scolor;
-        ray.rcol += Ambient(a, ray, pnorm);
+        ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm);
     }
     if (tdiff > kFtiny) {
         Rgb a = mcolor * tdiff;
         if (transBelowThreshold) a += mcolor * tspec;
-        FlipSurface(ray);
-        ray.rcol += Ambient(a, ray, textured ? -pnorm : ray.ron);
-        FlipSurface(ray);
+        ray.FlipSurface();
+        ray.rcol += tree.indirect().Ambient(ts, a, ray, textured ? -pnorm : ray.ron);
+        ray.FlipSurface();
     }
 
     // Direct light (Radiance's dirnorm()).
@@ -300,10 +274,13 @@ void Integrator::ShadeNormal(TracedRay& ray, const Material& m) {
         }
         return cval;
     };
-    Direct(ray, coefficient);
+    tree.direct().Add(ts, ray, coefficient);
 }
 
-void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
+namespace {
+
+void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
     const LightParams& p = std::get<LightParams>(m.params);
     const bool isGlow = m.type == MaterialType::Glow;
     // A glow beyond its radius (or with radius 0) acts as a far-away emitter
@@ -316,9 +293,9 @@ void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
         return;
     }
     const bool aimedElsewhere =
-        ray.rsrc >= 0 && (ray.instance >= 0 || sources_[ray.rsrc].surface != ray.surface);
+        ray.rsrc >= 0 && (ray.instance >= 0 || setup.sources[ray.rsrc].surface != ray.surface);
     if (aimedElsewhere) {
-        const Material& aimed = scene_.materials[sources_[ray.rsrc].material];
+        const Material& aimed = setup.scene.materials[setup.sources[ray.rsrc].material];
         bool illumBlocks = ray.rod > 0.0 && (aimed.type == MaterialType::Illum ||
                                              aimed.type == MaterialType::Glow);
         if (m.type != MaterialType::Illum || illumBlocks) return;  // wrong source
@@ -326,14 +303,14 @@ void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
     if (m.type == MaterialType::Illum && (ray.rsrc < 0 || aimedElsewhere)) {
         // An illum not hit on purpose shows its alternate material, or nothing.
         if (m.alternate >= 0) {
-            ShadeMaterial(ray, scene_.materials[m.alternate]);
+            tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
         } else {
-            PassThrough(ray);
+            tree.PassThrough(ts, ray);
         }
         return;
     }
     if (ray.rod < 0.0) return;  // black from behind
-    if (!shading_.direct.sourcesVisible && !(ray.crtype & kShadowRay) && !distantGlow(ray.rot)) {
+    if (!setup.shading.direct.sourcesVisible && !(ray.crtype & kShadowRay) && !distantGlow(ray.rot)) {
         return;  // -dv-
     }
     if (m.type == MaterialType::Spotlight) {
@@ -344,53 +321,55 @@ void Integrator::ShadeLight(TracedRay& ray, const Material& m) {
     ray.rcol = p.color * ray.pcol;
 }
 
-void Integrator::ShadeMirror(TracedRay& ray, const Material& m) {
+void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
     if (ray.rod < 0.0) {
-        if (!shading_.backfaceVisible) PassThrough(ray);
+        if (!setup.shading.backfaceVisible) tree.PassThrough(ts, ray);
         return;  // black from behind
     }
     if (m.alternate >= 0 && !((ray.crtype & (kAmbientRay | kSpecularRay)) && ray.rod > 0.0)) {
-        ShadeMaterial(ray, scene_.materials[m.alternate]);
+        tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
         return;
     }
     if (ray.crtype & kShadowRay) return;  // no virtual sources: mirrors block shadow rays
     Rgb coef = std::get<MirrorParams>(m.params).color * ray.pcol;
     TracedRay child;
-    if (!StartChild(child, ray, kReflectedRay, &coef)) return;
+    if (!tree.StartChild(ts, child, ray, kReflectedRay, &coef)) return;
     Vec3 dir = ray.dir + ray.ron * (2.0 * ray.rod);
     // Ambient rays keep the plain mirror direction (radiance-notes §2.8);
     // a perturbed one that would go through the mirror is dropped.
-    const bool textured = Textured(ray) && !(ray.crtype & kAmbientRay);
+    const bool textured = ray.Textured() && !(ray.crtype & kAmbientRay);
     if (textured) {
         Vec3 pnorm;
-        const double pdot = PerturbedNormal(ray, pnorm);
+        const double pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
         const Vec3 bent = ray.dir + pnorm * (2.0 * pdot);
         if (Dot(bent, ray.ron) > kFtiny) dir = bent;
     }
     child.dir = Normalize(dir);
-    Trace(child);
+    tree.Trace(ts, child);
     Rgb c = child.rcol * child.rcoef;
     ray.rcol += c;
     ray.mcol = c;
-    ray.rmt = ray.rot + (IsFlat(scene_, ray) && !textured ? child.EffectiveDistance() : 0.0);
+    ray.rmt = ray.rot + (IsFlat(setup.scene, ray) && !textured ? child.EffectiveDistance() : 0.0);
 }
 
-void Integrator::ShadeGlass(TracedRay& ray, const Material& m) {
+void ShadeGlass(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
     if (ray.rod < 0.0) {
-        if (!shading_.backfaceVisible) {
-            PassThrough(ray);
+        if (!setup.shading.backfaceVisible) {
+            tree.PassThrough(ts, ray);
             return;
         }
-        FlipSurface(ray);
+        ray.FlipSurface();
     }
     const GlassParams& p = std::get<GlassParams>(m.params);
     const double n = p.index;
     // Only transmission is patterned (below); reflection keeps the pane's colour.
     const Rgb& mcolor = p.color;
-    const bool textured = Textured(ray);
+    const bool textured = ray.Textured();
     Vec3 pnorm = ray.ron;
     double rawPdot = ray.rod;
-    if (textured) rawPdot = PerturbedNormal(ray, pnorm);
+    if (textured) rawPdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
     const double pdot = std::max(rawPdot, 1e-6);
     const double cos2 = std::sqrt((1.0 - 1.0 / (n * n)) + pdot * pdot / (n * n));
     const double r1e = std::pow((pdot - n * cos2) / (pdot + n * cos2), 2);
@@ -409,7 +388,7 @@ void Integrator::ShadeGlass(TracedRay& ray, const Material& m) {
     }
     transmission *= ray.pcol;
     TracedRay tchild;
-    if (StartChild(tchild, ray, kTransRay, &transmission)) {
+    if (tree.StartChild(ts, tchild, ray, kTransRay, &transmission)) {
         tchild.dir = ray.dir;
         if (textured && !(ray.crtype & (kShadowRay | kAmbientRay))) {
             // A thin pane bends the ray in and back out; with a tilted
@@ -418,19 +397,19 @@ void Integrator::ShadeGlass(TracedRay& ray, const Material& m) {
             const double length = Length(bent);
             if (length > 0.0) {
                 tchild.dir = bent / length;
-            } else if (warn_) {
-                warn_("bad perturbation for glass \"" + m.name + "\"");
+            } else {
+                ts.Warn("bad perturbation for glass \"" + m.name + "\"");
             }
         }
-        Trace(tchild);
+        tree.Trace(ts, tchild);
         ray.rcol += tchild.rcol * tchild.rcoef;
         ray.rxt = ray.rot + tchild.EffectiveDistance();
     }
     if (ray.crtype & kShadowRay) return;
     TracedRay rchild;
-    if (StartChild(rchild, ray, kReflectedRay, &reflection)) {
+    if (tree.StartChild(ts, rchild, ray, kReflectedRay, &reflection)) {
         rchild.dir = Normalize(ray.dir + pnorm * (2.0 * rawPdot));
-        Trace(rchild);
+        tree.Trace(ts, rchild);
         Rgb c = rchild.rcol * rchild.rcoef;
         ray.rcol += c;
         ray.mcol = c;
@@ -438,7 +417,8 @@ void Integrator::ShadeGlass(TracedRay& ray, const Material& m) {
     }
 }
 
-void Integrator::ShadeDielectric(TracedRay& ray, const Material& m) {
+void ShadeDielectric(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
     // Refractive indices on the two sides and the colour (transmission per
     // unit length) of the medium the refracted ray enters.
     const DielectricParams& p = std::get<DielectricParams>(m.params);
@@ -446,13 +426,13 @@ void Integrator::ShadeDielectric(TracedRay& ray, const Material& m) {
     const Rgb& insideColour = p.insideColor;
     const Rgb& outsideColour = p.outsideColor;
     const bool entering = ray.rod > 0.0;
-    if (!entering) FlipSurface(ray);
+    if (!entering) ray.FlipSurface();
     // With a texture, N' and its cosine; ron (now facing the ray) still
     // decides whether a new ray crossed the surface.
-    const bool textured = Textured(ray);
+    const bool textured = ray.Textured();
     Vec3 dnorm = ray.ron;
     double cos1 = ray.rod;
-    if (textured) cos1 = PerturbedNormal(ray, dnorm);
+    if (textured) cos1 = PerturbedNormal(setup.scene, ts, ray, dnorm);
     const double eta = entering ? nOutside / nInside : nInside / nOutside;  // n_incident / n_transmitted
     const Rgb beyond = (entering ? insideColour : outsideColour) * ray.pcol;
     const double k = 1.0 - eta * eta * (1.0 - cos1 * cos1);
@@ -473,11 +453,11 @@ void Integrator::ShadeDielectric(TracedRay& ray, const Material& m) {
         // Radiance is squeezed into the narrower cone of the denser medium: η².
         Rgb coef = Rgb::Grey((1.0 - reflectance) * eta * eta);
         TracedRay child;
-        if (StartChild(child, ray, kRefractedRay, &coef)) {
+        if (tree.StartChild(ts, child, ray, kRefractedRay, &coef)) {
             // Shadow rays keep their direction so they can still reach the
             // source they aim at (lazyrad simplification, see README).
             child.dir = (ray.crtype & kShadowRay) ? ray.dir : refracted;
-            Trace(child);
+            tree.Trace(ts, child);
             Rgb c = child.rcol * child.rcoef;
             // Beer–Lambert attenuation over the child's path in the medium.
             double dist = child.rot < kFhuge ? child.rot : 0.0;
@@ -490,16 +470,16 @@ void Integrator::ShadeDielectric(TracedRay& ray, const Material& m) {
         }
     }
     if (ray.crtype & kShadowRay) {
-        if (!entering) FlipSurface(ray);
+        if (!entering) ray.FlipSurface();
         return;
     }
     Rgb rcoef = Rgb::Grey(reflectance);
     TracedRay rchild;
-    if (StartChild(rchild, ray, kReflectedRay, &rcoef)) {
+    if (tree.StartChild(ts, rchild, ray, kReflectedRay, &rcoef)) {
         Vec3 dir = ray.dir + dnorm * (2.0 * cos1);
         if (textured && Dot(dir, ray.ron) <= kFtiny) dir = ray.dir + ray.ron * (2.0 * ray.rod);
         rchild.dir = Normalize(dir);
-        Trace(rchild);
+        tree.Trace(ts, rchild);
         Rgb c = rchild.rcol * rchild.rcoef;
         ray.rcol += c;
         ray.mcol = c;
@@ -507,7 +487,30 @@ void Integrator::ShadeDielectric(TracedRay& ray, const Material& m) {
     }
     // Radiance turns only its local copy of the normal: the ray keeps the
     // surface's own orientation (what -on prints).
-    if (!entering) FlipSurface(ray);
+    if (!entering) ray.FlipSurface();
+}
+
+}  // namespace
+
+void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    // One row per MaterialType, in its order: adding a material is a row
+    // here and a parameter parser in scene/, not a case in every switch.
+    using ShadeFunction = void (*)(const RayTree&, ThreadState&, TracedRay&, const Material&);
+    static constexpr ShadeFunction kShaders[] = {
+        &ShadeNormal,      // plastic
+        &ShadeNormal,      // metal
+        &ShadeNormal,      // trans
+        &ShadeLight,       // light
+        &ShadeLight,       // illum
+        &ShadeLight,       // glow
+        &ShadeLight,       // spotlight
+        &ShadeMirror,      // mirror
+        &ShadeGlass,       // glass
+        &ShadeDielectric,  // dielectric
+        &ShadeDielectric,  // interface
+    };
+    static_assert(std::size(kShaders) == kMaterialTypeCount);
+    kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);
 }
 
 }  // namespace rt

@@ -5,13 +5,15 @@
 // the ray's quantities in the modifier's space as the function language's
 // channels; the pattern colour a pattern multiplies in, the normal
 // perturbation a texture adds, and the two shadings a mixture blends.
+#include "shading/patterns.h"
+
 #include <algorithm>
 #include <cmath>
 #include <span>
 
 #include "cal/ray_variables.h"
 #include "scene/data_file.h"
-#include "shading/integrator.h"
+#include "shading/ray_tree.h"
 
 namespace rt {
 namespace {
@@ -98,16 +100,70 @@ private:
     const double s_;
 };
 
+/// Radiance's rayshade() from some modifier on: true if a material shaded the ray.
+bool ShadeChain(const RayTree& tree, ThreadState& ts, TracedRay& ray, const ModifierChain& chain) {
+    if (tree.ApplyModifiers(ts, ray, chain.modifiers)) return true;
+    if (chain.material < 0) return false;
+    tree.ShadeSurfaceMaterial(ts, ray,
+                              tree.setup().scene.materials[static_cast<std::size_t>(chain.material)]);
+    return true;
+}
+
+/// Radiance's raymixture(): shades copies of `ray` with `mixture`'s fore and
+/// back chains, weighted c and 1-c (c = `coefficient` clamped to [0, 1]), and
+/// blends their pcol and pert into `ray`, and their values when either
+/// reached a material (then returns true).
+bool Mix(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Pattern& mixture,
+         double coefficient) {
+    const double c = std::clamp(coefficient, 0.0, 1.0);
+    // Each side shades its own copy of the ray, with its share of the
+    // weight, so neither sees the other's flips, patterns or results.
+    TracedRay fore = ray, back = ray;
+    bool foreMaterial = false, backMaterial = false;
+    if (c > kFtiny) {
+        fore.rweight *= c;
+        fore.sourceWeight *= c;
+        fore.rcoef *= c;
+        foreMaterial = ShadeChain(tree, ts, fore, mixture.fore);
+    }
+    if (c < 1.0 - kFtiny) {
+        back.rweight *= 1.0 - c;
+        back.sourceWeight *= 1.0 - c;
+        back.rcoef *= 1.0 - c;
+        backMaterial = ShadeChain(tree, ts, back, mixture.back);
+    }
+    // Where only one side is a material, the other is a hole in it.
+    if (foreMaterial != backMaterial) {
+        if (backMaterial && c > kFtiny) {
+            tree.PassThrough(ts, fore);
+        } else if (foreMaterial && c < 1.0 - kFtiny) {
+            tree.PassThrough(ts, back);
+        }
+    }
+    ray.pert = fore.pert * c + back.pert * (1.0 - c);
+    ray.pcol = fore.pcol * c + back.pcol * (1.0 - c);
+    if (!foreMaterial && !backMaterial) return false;  // acted as a pattern/texture
+    ray.rcol = fore.rcol * c + back.rcol * (1.0 - c);
+    ray.mcol = fore.mcol * c + back.mcol * (1.0 - c);
+    // One distance each: the dominant side's.
+    const TracedRay& major = c >= 0.5 ? fore : back;
+    ray.rmt = major.rmt;
+    ray.rxt = major.rxt;
+    return true;
+}
+
 }  // namespace
 
-bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modifiers) {
-    const cal::Program& functions = *scene_.functions;
+bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
+                        const std::vector<int>& modifiers) {
+    const Scene& scene = tree.setup().scene;
+    const cal::Program& functions = *scene.functions;
     for (const int index : modifiers) {
-        const Pattern& modifier = scene_.patterns[static_cast<std::size_t>(index)];
+        const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
         const PatternSpace space(ray, modifier);
         // Mixtures recurse into ApplyModifiers through ShadeChain, so the
         // context is set up afresh for each modifier.
-        cal::Context& context = *functionContext_;
+        cal::Context& context = *ts.functionContext;
         const PatternChannels channels(ray, space);
         context.SetChannels(&channels);
         context.SetArguments(modifier.args, modifier.owner);
@@ -134,8 +190,8 @@ bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modi
             // Radiance skips the modifier for this ray (a pattern counts as
             // 1, a texture adds nothing, a mixture is no material) and warns;
             // once per modifier here, not once per ray.
-            if (patternWarned_.insert(index).second && warn_) {
-                warn_("compute error for " + modifier.owner + " (" + context.mathErrorText() + ")");
+            if (ts.patternWarned.insert(index).second) {
+                ts.Warn("compute error for " + modifier.owner + " (" + context.mathErrorText() + ")");
             }
             continue;
         }
@@ -153,56 +209,11 @@ bool Integrator::ApplyModifierChain(TracedRay& ray, const std::vector<int>& modi
                 break;
             }
             case ModifierKind::Mixture:
-                if (Mix(ray, modifier, v[0])) return true;
+                if (Mix(tree, ts, ray, modifier, v[0])) return true;
                 break;
         }
     }
     return false;
-}
-
-bool Integrator::ShadeChain(TracedRay& ray, const ModifierChain& chain) {
-    if (ApplyModifiers(ray, chain.modifiers)) return true;
-    if (chain.material < 0) return false;
-    ShadeSurfaceMaterial(ray, scene_.materials[static_cast<std::size_t>(chain.material)]);
-    return true;
-}
-
-bool Integrator::Mix(TracedRay& ray, const Pattern& mixture, double coefficient) {
-    const double c = std::clamp(coefficient, 0.0, 1.0);
-    // Each side shades its own copy of the ray, with its share of the
-    // weight, so neither sees the other's flips, patterns or results.
-    TracedRay fore = ray, back = ray;
-    bool foreMaterial = false, backMaterial = false;
-    if (c > kFtiny) {
-        fore.rweight *= c;
-        fore.sourceWeight *= c;
-        fore.rcoef *= c;
-        foreMaterial = ShadeChain(fore, mixture.fore);
-    }
-    if (c < 1.0 - kFtiny) {
-        back.rweight *= 1.0 - c;
-        back.sourceWeight *= 1.0 - c;
-        back.rcoef *= 1.0 - c;
-        backMaterial = ShadeChain(back, mixture.back);
-    }
-    // Where only one side is a material, the other is a hole in it.
-    if (foreMaterial != backMaterial) {
-        if (backMaterial && c > kFtiny) {
-            PassThrough(fore);
-        } else if (foreMaterial && c < 1.0 - kFtiny) {
-            PassThrough(back);
-        }
-    }
-    ray.pert = fore.pert * c + back.pert * (1.0 - c);
-    ray.pcol = fore.pcol * c + back.pcol * (1.0 - c);
-    if (!foreMaterial && !backMaterial) return false;  // acted as a pattern/texture
-    ray.rcol = fore.rcol * c + back.rcol * (1.0 - c);
-    ray.mcol = fore.mcol * c + back.mcol * (1.0 - c);
-    // One distance each: the dominant side's.
-    const TracedRay& major = c >= 0.5 ? fore : back;
-    ray.rmt = major.rmt;
-    ray.rxt = major.rxt;
-    return true;
 }
 
 }  // namespace rt

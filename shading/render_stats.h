@@ -25,7 +25,7 @@ struct RenderStats {
                                  // lookups done at its samples' hits
     double secondsLookup = 0;    // cache lookups (interpolation)
     double secondsDirect = 0;    // direct lighting, shadow rays included; an estimate
-                                 // from a sample of the calls (Integrator::Direct)
+                                 // from a sample of the calls (DirectLight::Add)
 };
 
 }  // namespace rt

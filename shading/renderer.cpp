@@ -1,12 +1,25 @@
 // SPDX-License-Identifier: MIT
 #include "shading/renderer.h"
 
-#include "shading/integrator.h"
+#include <utility>
+
+#include "shading/ray_tree.h"
+#include "shading/shading_state.h"
 
 namespace rt {
 
+struct Renderer::Shared {
+    Shared(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+           const AmbientOptions& ambient, const WarningSink& warn,
+           std::shared_ptr<AmbientCache> cache)
+        : setup(scene, core, shading, ambient, warn, std::move(cache)), tree(setup) {}
+    ShadingSetup setup;
+    RayTree tree;  // refers to `setup`, declared before it
+};
+
 struct Renderer::Impl {
-    Integrator integrator;
+    std::shared_ptr<const Shared> shared;
+    ThreadState state;
 };
 
 std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
@@ -19,6 +32,17 @@ std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
         AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()));
 }
 
+std::shared_ptr<const Renderer::Shared> Renderer::Share(const Scene& scene, const RayCore& core,
+                                                       const ShadingOptions& shading,
+                                                       const AmbientOptions& ambient,
+                                                       const WarningSink& warn,
+                                                       std::shared_ptr<AmbientCache> cache) {
+    return std::make_shared<const Shared>(scene, core, shading, ambient, warn, std::move(cache));
+}
+
+Renderer::Renderer(std::shared_ptr<const Shared> shared, WarningSink warn)
+    : impl_(new Impl{shared, ThreadState(shared->setup, std::move(warn))}) {}
+
 Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
                    const AmbientOptions& ambient, WarningSink warn)
     : Renderer(scene, core, shading, ambient, std::move(warn), MakeCache(scene, ambient)) {}
@@ -26,26 +50,32 @@ Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions
 Renderer::Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
                    const AmbientOptions& ambient, WarningSink warn,
                    std::shared_ptr<AmbientCache> cache)
-    : impl_(new Impl{Integrator(scene, core, shading, ambient, std::move(warn), std::move(cache))}) {}
+    : Renderer(Share(scene, core, shading, ambient, warn, std::move(cache)), warn) {}
 
 Renderer::~Renderer() = default;
 
 RayResult Renderer::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
                                std::uint64_t rayIndex) {
-    return impl_->integrator.TraceInput(org, dir, rmax, rayIndex);
+    return impl_->shared->tree.TraceInput(impl_->state, org, dir, rmax, rayIndex);
 }
 
 void Renderer::SetTraceCallback(std::function<void(const RayResult&)> callback,
                                 bool shadowRays) {
-    impl_->integrator.SetTraceCallback(std::move(callback), shadowRays);
+    impl_->state.trace = std::move(callback);
+    impl_->state.traceShadows = shadowRays;
 }
 
-const RenderStats& Renderer::Stats() const { return impl_->integrator.stats(); }
+const RenderStats& Renderer::Stats() const { return impl_->state.stats; }
 
-void Renderer::EnableTiming(bool on) { impl_->integrator.EnableTiming(on); }
+void Renderer::EnableTiming(bool on) { impl_->state.EnableTiming(on); }
 
-std::vector<AmbientRecord> Renderer::TakeNewRecords() { return impl_->integrator.TakeNewRecords(); }
+std::vector<AmbientRecord> Renderer::TakeNewRecords() {
+    return std::exchange(impl_->state.newRecords, {});
+}
 
-std::vector<AmbientRecord> Renderer::CacheRecords() const { return impl_->integrator.CacheRecords(); }
+std::vector<AmbientRecord> Renderer::CacheRecords() const {
+    const auto& cache = impl_->shared->setup.cache;
+    return cache ? cache->Records() : std::vector<AmbientRecord>{};
+}
 
 }  // namespace rt

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 //
-// The radiance integrator: Radiance's ray tree (raytrace.c), its materials
-// (normal.c, m_mirror.c, glass.c, dielectric.c, source.c m_light) and its
-// direct calculation (source.c, srcsamp.c, srcsupp.c). One Renderer per
-// thread or process: it carries source hit statistics and random state.
+// shading/'s public face: one Renderer per thread evaluates input rays the
+// way Radiance's rtrace does. Inside, it binds three parts (shading_state.h,
+// ray_tree.h): the read-only ShadingSetup (light sources, options, the
+// possibly shared cache), the RayTree that walks rays through surfaces,
+// modifiers and materials (materials.h) with DirectLight and IndirectLight,
+// and this thread's ThreadState (random numbers, source statistics, counters,
+// scratch space), which the tree is handed explicitly at every call.
 #pragma once
 
 #include <cstdint>
@@ -29,9 +32,24 @@ public:
     static std::shared_ptr<AmbientCache> MakeCache(const Scene& scene,
                                                    const AmbientOptions& ambient);
 
-    /// `scene` and `core` must outlive the Renderer. Finds the light sources
-    /// (warning "no light sources found" through `warn` when there are none).
-    /// `cache` is from MakeCache (possibly shared); by default a private one.
+    /// What the Renderers of one scene and one set of options share, and only
+    /// read while they trace: the options, the light sources, the ray tree,
+    /// the cache. Opaque outside shading/.
+    struct Shared;
+    /// `scene` and `core` must outlive every Renderer made from the result.
+    /// Finds the light sources (warning "no light sources found" through
+    /// `warn` when there are none). `cache` is from MakeCache, or null.
+    static std::shared_ptr<const Shared> Share(const Scene& scene, const RayCore& core,
+                                               const ShadingOptions& shading,
+                                               const AmbientOptions& ambient,
+                                               const WarningSink& warn,
+                                               std::shared_ptr<AmbientCache> cache);
+
+    /// One thread's renderer over `shared`: its own random numbers, source
+    /// statistics, counters and new records; warnings while tracing go to `warn`.
+    Renderer(std::shared_ptr<const Shared> shared, WarningSink warn);
+    /// A Renderer with a set-up of its own (Share, then the above); by
+    /// default with a private cache.
     Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
              const AmbientOptions& ambient, WarningSink warn);
     Renderer(const Scene& scene, const RayCore& core, const ShadingOptions& shading,

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -255,6 +256,62 @@ TEST(Renderer, ReportsHowTheFirstSurfaceGotItsIndirectLight) {
     Fixture g(b, {}, none);
     EXPECT_EQ(g.Trace({0, 0, 0}, {0, 0, -1}).ambientOutcome, RayResult::AmbientOutcome::None);
     EXPECT_TRUE(g.renderer->CacheRecords().empty());  // no cache at -ab 0
+}
+
+/// Threads share one Renderer::Shared and keep everything a ray changes
+/// (random numbers, source statistics, scratch, counters) in their own
+/// Renderer: each thread's results are bit for bit those of a private
+/// Renderer tracing the same rays in the same order.
+TEST(Renderer, ThreadsSharingOneSetUpKeepTheirOwnState) {
+    testing::SceneBuilder b;
+    // Eight small lamps, so that the -dt test leaves samples untested and
+    // estimates them from each source's hit statistics; a box between the
+    // lamps and the floor, so that shadows differ by point.
+    const int lamp = b.AddMaterial("lamp", MaterialType::Light, {50, 50, 50});
+    const int white = b.AddMaterial("white", MaterialType::Plastic, {0.6, 0.6, 0.6, 0.2, 0.05});
+    for (int i = 0; i < 8; ++i) {
+        const double x = -3 + 0.8 * i;
+        b.AddPolygon("lamp" + std::to_string(i), lamp,
+                     {{x, -0.1, 3}, {x, 0.1, 3}, {x + 0.2, 0.1, 3}, {x + 0.2, -0.1, 3}});
+    }
+    b.AddPolygon("floor", white, {{-6, -6, 0}, {6, -6, 0}, {6, 6, 0}, {-6, 6, 0}});
+    b.AddPolygon("block", white, {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}});
+    const Scene scene = b.Build();
+    const RayCore core(scene);
+    ShadingOptions shading;
+    shading.uncorrelated = true;
+    shading.specular.sampling = 2;  // rough highlights (above -st) draw random numbers
+    AmbientOptions ambient;
+    ambient.bounces = 1;
+    ambient.divisions = 32;
+    ambient.accuracy = 0;  // no cache: each ray's value depends on its thread only
+    constexpr int kRays = 60;
+    const auto trace = [&](Renderer& r, int first) {
+        std::vector<RayResult> out;
+        for (int i = first; i < kRays; i += 2) {
+            const Vec3 org(-4 + 8.0 * i / kRays, 0.3 * (i % 5), 2.5);
+            out.push_back(r.TraceInput(org, Normalize(Vec3(0.1, 0.05, -1)), 0,
+                                       static_cast<std::uint64_t>(i)));
+        }
+        return out;
+    };
+    const auto shared = Renderer::Share(scene, core, shading, ambient, {}, nullptr);
+    std::vector<RayResult> threaded[2];
+    {
+        Renderer r0(shared, {}), r1(shared, {});
+        std::jthread t0([&] { threaded[0] = trace(r0, 0); });
+        std::jthread t1([&] { threaded[1] = trace(r1, 1); });
+    }
+    for (int half = 0; half < 2; ++half) {
+        Renderer alone(scene, core, shading, ambient, {}, nullptr);
+        const std::vector<RayResult> expected = trace(alone, half);
+        ASSERT_EQ(threaded[half].size(), expected.size());
+        for (size_t k = 0; k < expected.size(); ++k) {
+            EXPECT_EQ(threaded[half][k].value.r, expected[k].value.r) << half << " " << k;
+            EXPECT_EQ(threaded[half][k].value.b, expected[k].value.b) << half << " " << k;
+        }
+        EXPECT_GT(expected.front().value.g + expected.back().value.g, 0.0);
+    }
 }
 
 }  // namespace

@@ -174,7 +174,7 @@ TEST(SensorsOnSurfaces, OnEdgesAndInCornersAreFiniteAndNonNegative) {
 /// the two diagonal sensors, which the -I offset moves off the walls,
 /// differed by 0.1-0.4 % (seeds 1-2), the dark corner behind the tall block
 /// by 0.4-3.9 %; bound 6 %. Before -I sensors were moved off the walls through
-/// them (Integrator::OffWallsThroughSensor), floor and ceiling corners came
+/// them (RayTree::OffWallsThroughSensor), floor and ceiling corners came
 /// out 2-18 % low.
 TEST(SensorsOnSurfaces, InCornersMatchPointsBesideThem) {
     const Rows corner = rt::testing::RunRows(kCornellOptions + kCornell,

@@ -2,10 +2,12 @@
 //
 // The ray tree: rayorigin() limits, raytrace(), rayshade(), raytrans(),
 // sourcehit() and the -I/-i irradiance modes (radiance-notes.md §1.9, §2.5).
-#include "shading/integrator.h"
+#include "shading/ray_tree.h"
 
 #include <cmath>
 #include <cstdlib>
+
+#include "shading/materials.h"
 
 namespace rt {
 namespace {
@@ -19,64 +21,10 @@ constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay |
 constexpr double kImmediateOffset = 1.1e-4;
 constexpr double kImmediateHit = 1e-5;
 
-bool HasGlowSky(const Scene& scene) {
-    for (const Surface& s : scene.surfaces) {
-        if (s.material >= 0 && scene.materials[s.material].type == MaterialType::Glow) return true;
-    }
-    return false;
-}
-
 }  // namespace
 
-Integrator::Integrator(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
-                       const AmbientOptions& ambient, WarningSink warn,
-                       std::shared_ptr<AmbientCache> cache)
-    : scene_(scene),
-      core_(core),
-      shading_(shading),
-      ambient_(ambient),
-      warn_(std::move(warn)),
-      rng_(shading.seed),
-      cache_(std::move(cache)) {
-    if (scene.functions) functionContext_ = std::make_unique<cal::Context>(*scene.functions);
-    // Radiance's hidden "Lamb" material for -i/-I: reflectance π turns the
-    // reflected radiance into irradiance.
-    lambertian_.name = "Lamb";
-    lambertian_.type = MaterialType::Plastic;
-    lambertian_.args = {kPi, kPi, kPi, 0.0, 0.0};
-    lambertian_.params = MakeMaterialParams(lambertian_.type, lambertian_.args);
-
-    // With indirect bounces, a glow sky lights the scene through ambient rays,
-    // so the absence of direct sources is not worth a warning (as Radiance).
-    const bool quiet = ambient.bounces > 0 && HasGlowSky(scene);
-    WarningSink sourceWarn = [this, quiet](const std::string& msg) {
-        if (quiet && msg == "no light sources found") return;
-        if (warn_) warn_(msg);
-    };
-    Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
-    sources_ = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
-
-    ambientList_.insert(ambient.modifierList.begin(), ambient.modifierList.end());
-
-    shadowCheckCounts_.resize(257);
-    for (size_t n = 0; n < shadowCheckCounts_.size(); ++n) {
-        shadowCheckCounts_[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
-    }
-
-    opaqueShadows_ = shading.backfaceVisible;
-    for (const Surface& s : scene.surfaces) {
-        if (s.material < 0) continue;
-        MaterialType t = scene.materials[s.material].type;
-        if (IsTransparentType(t) || t == MaterialType::Illum) opaqueShadows_ = false;
-    }
-    // A mixture may be partly a hole, or partly a transparent material.
-    for (const Pattern& p : scene.patterns) {
-        if (p.kind == ModifierKind::Mixture) opaqueShadows_ = false;
-    }
-}
-
-bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned type,
-                            const Rgb* coef) {
+bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
+                         unsigned type, const Rgb* coef) const {
     child.org = parent.rop;
     child.parent = &parent;
     child.rtype = type;
@@ -96,13 +44,13 @@ bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned 
     }
     if (child.rweight <= 0) return false;
     if (type == kShadowRay) return true;
-    const int lr = shading_.limits.reflections;
-    const double lw = shading_.limits.weight;
+    const int lr = s_.shading.limits.reflections;
+    const double lw = s_.shading.limits.weight;
     if (lr <= 0 && coef) {
         if (lr < 0 && child.rlvl > -lr) return false;
         if (child.rweight >= lw) return true;
         // Russian roulette: survive with probability weight/lw, boosted.
-        if (rng_.Uniform() * lw > child.rweight) return false;
+        if (ts.rng.Uniform() * lw > child.rweight) return false;
         child.rcoef *= lw / child.rweight;
         child.rweight = lw;
         return true;
@@ -110,14 +58,14 @@ bool Integrator::StartChild(TracedRay& child, const TracedRay& parent, unsigned 
     return child.rweight >= lw && child.rlvl <= std::abs(lr);
 }
 
-bool Integrator::HitDistantSource(TracedRay& ray) const {
+bool RayTree::HitDistantSource(TracedRay& ray) const {
     int found = -1;
-    for (int i = 0; i < static_cast<int>(sources_.size()); ++i) {
-        const LightSource& src = sources_[i];
+    for (int i = 0; i < static_cast<int>(s_.sources.size()); ++i) {
+        const LightSource& src = s_.sources[i];
         if (src.shape != LightSource::Shape::Distant) continue;
         if (ray.rsrc >= 0 && ray.rsrc != i) continue;  // an aimed ray tests its own source only
         if (2.0 * kPi * (1.0 - Dot(src.location, ray.dir)) > src.area) continue;
-        const Material& m = scene_.materials[src.material];
+        const Material& m = s_.scene.materials[src.material];
         // A transparent illum is counted directly: ambient and specular rays
         // must not see it again.
         bool transparentIllum = m.type == MaterialType::Illum && m.alternate < 0;
@@ -129,91 +77,99 @@ bool Integrator::HitDistantSource(TracedRay& ray) const {
         if (src.skip && found < 0) found = i;
     }
     if (found < 0) return false;
-    ray.SetDistantHit(sources_[found].surface);
+    ray.SetDistantHit(s_.sources[found].surface);
     return true;
 }
 
-void Integrator::Trace(TracedRay& ray) {
-    ++stats_.raysTraced;
+void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
+    ++ts.stats.raysTraced;
     ray.rcol = Rgb();
     ray.mcol = Rgb();
-    if (auto hit = core_.Intersect(ray.org, ray.dir, ray.rmax)) {
-        ray.SetHit(*hit, scene_.PatternSpace(hit->instance));
-        Shade(ray);
+    if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax)) {
+        ray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
+        Shade(ts, ray);
     } else if (ray.rmax > 0) {
         // -ld: nothing before the clipping distance; no distant-source test.
         ray.rot = kFhuge;
         ray.rop = ray.org + ray.dir * ray.rmax;
     } else if (HitDistantSource(ray)) {
-        const Surface& source = scene_.surfaces[ray.surface];
-        if (!ApplyModifiers(ray, source.patterns)) {
-            ShadeMaterial(ray, scene_.materials[source.material]);
+        const Surface& source = s_.scene.surfaces[ray.surface];
+        if (!ApplyModifiers(ts, ray, source.patterns)) {
+            ShadeMaterial(ts, ray, s_.scene.materials[source.material]);
         }
     } else {
         ray.rot = kFhuge;
         ray.rop = ray.org;
     }
-    Report(ray);
+    Report(ts, ray);
 }
 
-void Integrator::Shade(TracedRay& ray) {
-    const Surface& surface = scene_.HitSurface(ray.instance, ray.surface);
+void RayTree::Shade(ThreadState& ts, TracedRay& ray) const {
+    const Surface& surface = s_.scene.HitSurface(ray.instance, ray.surface);
     if (surface.material < 0 && surface.patterns.empty()) return;  // void: nothing to shade, black
-    if (ApplyModifiers(ray, surface.patterns)) return;  // a mixture shaded it
+    if (ApplyModifiers(ts, ray, surface.patterns)) return;  // a mixture shaded it
     if (surface.material < 0) {
         // A chain of modifiers without material (a mixture that reached none,
         // or patterns only) is a hole in the surface, as in Radiance.
-        PassThrough(ray);
+        PassThrough(ts, ray);
         return;
     }
-    ShadeSurfaceMaterial(ray, scene_.materials[surface.material]);
+    ShadeSurfaceMaterial(ts, ray, s_.scene.materials[surface.material]);
 }
 
-void Integrator::ShadeSurfaceMaterial(TracedRay& ray, const Material& m) {
+void RayTree::ShadeSurfaceMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const {
     // -i: the first opaque, non-emitting surface reached along primary and
     // transmitted rays is measured as a Lambertian irradiance meter. The
     // transparent surfaces before it are passed straight through, unattenuated
     // (Radiance's irr_ignore and raytrans): the meter reads what arrives at the
     // surface behind the glass, not through it a second time.
-    if (shading_.irradiance == IrradianceMode::AtHit &&
+    if (s_.shading.irradiance == IrradianceMode::AtHit &&
         (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsLightType(m.type)) {
         if (IsTransparentType(m.type)) {
-            PassThrough(ray);
+            PassThrough(ts, ray);
             return;
         }
         ray.lambertian = true;
-        ShadeNormal(ray, lambertian_);
+        ShadeNormal(*this, ts, ray, s_.lambertian);
         return;
     }
-    ShadeMaterial(ray, m);
+    ShadeMaterial(ts, ray, m);
 }
 
-void Integrator::PassThrough(TracedRay& ray) {
+void RayTree::ShadeMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const {
+    // The material's own chain (Radiance's raytexture(m->omod)), before it
+    // computes anything. Mixtures on it cannot reach a material (refused at
+    // load as "conflicting material").
+    ApplyModifiers(ts, ray, m.patterns);
+    ShadeByType(*this, ts, ray, m);
+}
+
+void RayTree::PassThrough(ThreadState& ts, TracedRay& ray) const {
     TracedRay child;
-    StartChild(child, ray, kTransRay, nullptr);  // always continues, whatever the limits
+    StartChild(ts, child, ray, kTransRay, nullptr);  // always continues, whatever the limits
     child.dir = ray.dir;
-    Trace(child);
+    Trace(ts, child);
     ray.mcol = child.mcol;
     ray.rcol = child.rcol;
     ray.rmt = ray.rot + child.rmt;
     ray.rxt = ray.rot + child.rxt;
 }
 
-Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double offset) const {
+Vec3 RayTree::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double offset) const {
     // The surface the sensor sits on, just below the measuring point.
-    const auto floor = core_.Intersect(point, -normal, 2 * offset);
+    const auto floor = s_.core.Intersect(point, -normal, 2 * offset);
     if (!floor) return point;
     const Frame frame = Frame::Around(normal);
     for (const Vec3& d : {frame.u, -frame.u, frame.v, -frame.v}) {
         // A surface through the point crosses this short probe at its middle.
-        const auto wall = core_.Intersect(point - d * offset, d, 2 * offset);
+        const auto wall = s_.core.Intersect(point - d * offset, d, 2 * offset);
         if (!wall || wall->SameSurface(*floor) ||
             std::fabs(wall->t - offset) > 1e-2 * offset) {
             continue;
         }
         // The room is on the side of the wall where the floor goes on.
         const auto floorOn = [&](double side) {
-            const auto h = core_.Intersect(point + wall->normal * (side * offset), -normal,
+            const auto h = s_.core.Intersect(point + wall->normal * (side * offset), -normal,
                                            2 * offset);
             return h && h->SameSurface(*floor);
         };
@@ -223,25 +179,13 @@ Vec3 Integrator::OffWallsThroughSensor(Vec3 point, const Vec3& normal, double of
     return point;
 }
 
-void Integrator::FlipSurface(TracedRay& ray) const {
-    ray.ron = -ray.ron;
-    ray.rod = -ray.rod;
-    ray.pert = -ray.pert;
+void RayTree::Report(ThreadState& ts, const TracedRay& ray) const {
+    if (!ts.trace) return;
+    if (ray.rtype == kShadowRay && !ts.traceShadows) return;
+    ts.trace(MakeResult(ts, ray));
 }
 
-void Integrator::Report(const TracedRay& ray) {
-    if (!trace_) return;
-    if (ray.rtype == kShadowRay && !traceShadows_) return;
-    trace_(MakeResult(ray));
-}
-
-RayResult Integrator::WithAmbientOutcome(RayResult r) const {
-    r.ambientOutcome = firstOutcome_;
-    r.indirectIrradiance = firstIndirectIrradiance_;
-    return r;
-}
-
-RayResult Integrator::MakeResult(const TracedRay& ray) {
+RayResult RayTree::MakeResult(ThreadState& ts, const TracedRay& ray) const {
     RayResult r;
     r.origin = ray.org;
     r.direction = ray.dir;
@@ -258,42 +202,45 @@ RayResult Integrator::MakeResult(const TracedRay& ray) {
     r.coefficient = coef;
     r.contribution = ray.rcol * coef;
     if (ray.surface >= 0 && !ray.irradianceHit) {
-        const Surface& s = scene_.HitSurface(ray.instance, ray.surface);
+        const Surface& s = s_.scene.HitSurface(ray.instance, ray.surface);
         // rtrace's -on is raynormal(). Without any perturbation that is ron
         // renormalised; ron is unit already, and taking it as it is keeps
         // the output of untextured surfaces bit for bit what it was.
         if (ray.pert == Vec3()) {
             r.normal = ray.ron;
         } else {
-            PerturbedNormal(ray, r.normal);
+            PerturbedNormal(s_.scene, ts, ray, r.normal);
         }
         r.geometricNormal = ray.geometricNormal;
         r.surfaceName = s.name;
         r.u = ray.lu;
         r.v = ray.lv;
         r.modifierName = s.modifierName;
-        r.materialName = s.material >= 0 ? std::string_view(scene_.materials[s.material].name)
+        r.materialName = s.material >= 0 ? std::string_view(s_.scene.materials[s.material].name)
                                          : std::string_view("void");
     }
     return r;
 }
 
-RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
-                                 std::uint64_t rayIndex) {
+RayResult RayTree::TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir, double rmax,
+                              std::uint64_t rayIndex) const {
     // -u+: a stream per input position, so identical rays are independent
     // samples; -u-: the same stream for every ray (correlated sampling).
-    rng_.Seed(MixSeed(shading_.seed, shading_.uncorrelated ? rayIndex : 0));
-    firstAmbientSeen_ = false;
-    firstOutcome_ = RayResult::AmbientOutcome::None;
-    firstIndirectIrradiance_ = Rgb();
+    ts.StartInputRay(s_.shading, rayIndex);
+    // The result carries the indirect outcome at the first surface shaded.
+    const auto withOutcome = [&ts](RayResult r) {
+        r.ambientOutcome = ts.firstOutcome;
+        r.indirectIrradiance = ts.firstIndirectIrradiance;
+        return r;
+    };
     TracedRay ray;
     ray.org = org;
     ray.dir = dir;
     ray.rmax = rmax;
-    if (shading_.irradiance == IrradianceMode::Immediate) {
+    if (s_.shading.irradiance == IrradianceMode::Immediate) {
         // The input is a measurement point and the normal of the measuring
         // plane: pretend a ray came down the normal and hit a Lambertian meter.
-        const double scale = scene_.ToleranceScale();
+        const double scale = s_.scene.ToleranceScale();
         ray.org = org + dir * (kImmediateOffset * scale);
         ray.dir = -dir;
         ray.rmax = 0;
@@ -304,12 +251,13 @@ RayResult Integrator::TraceInput(const Vec3& org, const Vec3& dir, double rmax,
         ray.rod = 1.0;
         ray.irradianceHit = true;
         ray.lambertian = true;
-        ShadeNormal(ray, lambertian_);
-        Report(ray);
-        return WithAmbientOutcome(MakeResult(ray));
+        ShadeNormal(*this, ts, ray, s_.lambertian);
+        Report(ts, ray);
+        return withOutcome(MakeResult(ts, ray));
     }
-    Trace(ray);
-    return WithAmbientOutcome(MakeResult(ray));
+    Trace(ts, ray);
+    return withOutcome(MakeResult(ts, ray));
 }
 
 }  // namespace rt
+

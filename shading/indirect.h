@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+//
+// Internal to shading/: the indirect term, Radiance's multambient()
+// (radiance-notes.md §4.1) on top of the lazy irradiance cache in ambient/:
+// interpolate where records are good enough, otherwise sample a new
+// hemisphere and keep it as a record.
+#pragma once
+
+#include "ambient/hemisphere.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+#include "shading/ray_result.h"
+#include "shading/shading_state.h"
+#include "shading/traced_ray.h"
+
+namespace rt {
+
+class RayTree;
+
+class IndirectLight {
+public:
+    /// Both must outlive this object; `tree` traces the hemisphere rays.
+    IndirectLight(const ShadingSetup& setup, const RayTree& tree) : s_(setup), tree_(tree) {}
+
+    /// The indirect term A ⊗ E/π at a shaded point, for diffuse coefficient
+    /// `coefficient` and shading normal `normal` (unit); with no ambient
+    /// bounces this is the -av value.
+    Rgb Ambient(ThreadState& ts, const Rgb& coefficient, const TracedRay& ray,
+                const Vec3& normal) const;
+
+private:
+    /// The fallback where no bounce is computed: -av, or its -aw average.
+    Rgb Fallback(const Rgb& coefficient) const;
+    /// Samples a fresh hemisphere at the ray's hit point (ambient depth
+    /// raised for the duration). `coefficient` is the material's diffuse
+    /// coefficient; `weight` the record weight. Sample rays get the weights
+    /// Radiance gives them (§4.5): 0.5 of the parent's with the cache, their
+    /// share of the coefficient without.
+    Hemisphere Sample(ThreadState& ts, const TracedRay& ray, const Rgb& coefficient,
+                      double weight) const;
+    /// -ae/-ai: the hit surface's modifier keeps the -av value.
+    bool Excluded(const TracedRay& ray) const;
+    /// Keeps how the input ray's first shaded surface got its indirect light.
+    static void Note(ThreadState& ts, RayResult::AmbientOutcome outcome, const Rgb& meanRadiance);
+
+    const ShadingSetup& s_;
+    const RayTree& tree_;
+};
+
+}  // namespace rt

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+//
+// Internal to shading/: Radiance's ray tree (raytrace.c): rayorigin()
+// limits, raytrace(), rayshade(), raytrans(), sourcehit() and the -I/-i
+// irradiance modes (radiance-notes.md §1.9, §2.5). The tree walks from ray
+// to surface to modifiers (patterns.h) to material (materials.h), whose
+// shaders trace child rays through it and ask DirectLight and IndirectLight
+// for the light arriving at their point.
+//
+// A RayTree holds only the read-only ShadingSetup; every call that changes
+// something takes the calling thread's ThreadState.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/rgb.h"
+#include "core/vecmath.h"
+#include "scene/scene.h"
+#include "shading/direct.h"
+#include "shading/indirect.h"
+#include "shading/patterns.h"
+#include "shading/ray_result.h"
+#include "shading/shading_state.h"
+#include "shading/traced_ray.h"
+
+namespace rt {
+
+class RayTree {
+public:
+    /// `setup` must outlive the tree.
+    explicit RayTree(const ShadingSetup& setup) : s_(setup), direct_(setup, *this),
+                                                  indirect_(setup, *this) {}
+    RayTree(const RayTree&) = delete;
+    RayTree& operator=(const RayTree&) = delete;
+
+    /// Evaluates one rtrace input ray (see Renderer::TraceInput).
+    RayResult TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir, double rmax,
+                         std::uint64_t rayIndex) const;
+
+    /// Radiance's rayorigin(): sets up `child` from `parent`; false if the ray
+    /// must not be traced (weight limits, Russian roulette). `coef` may be null.
+    bool StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent, unsigned type,
+                    const Rgb* coef) const;
+    /// Traces and shades `ray` (raytrace()): closest hit, distant sources, trace callback.
+    void Trace(ThreadState& ts, TracedRay& ray) const;
+    /// Shades a ray that hit `ray.surface` (rayshade()); with -i, Lamb replaces materials.
+    void Shade(ThreadState& ts, TracedRay& ray) const;
+    /// Pass-through (raytrans()): continues the ray unchanged past the surface.
+    void PassThrough(ThreadState& ts, TracedRay& ray) const;
+    /// Applies the material's own chain, then shades with it (materials.h).
+    void ShadeMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const;
+    /// ShadeMaterial, except that with -i the first opaque surface reached by a
+    /// primary or transmitted ray is measured instead (rayshade()'s Lamb hack).
+    void ShadeSurfaceMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const;
+    /// Evaluates a modifier chain (patterns.h); true when a mixture shaded the
+    /// ray. Inline for the common case of an empty chain: it runs at every hit.
+    bool ApplyModifiers(ThreadState& ts, TracedRay& ray, const std::vector<int>& modifiers) const {
+        return !modifiers.empty() && ApplyModifierChain(*this, ts, ray, modifiers);
+    }
+    /// Hands a finished ray to the trace callback (-ot/-oT), if any.
+    void Report(ThreadState& ts, const TracedRay& ray) const;
+
+    const ShadingSetup& setup() const { return s_; }
+    const DirectLight& direct() const { return direct_; }
+    const IndirectLight& indirect() const { return indirect_; }
+
+private:
+    /// Looks for a distant source in the ray's direction (sourcehit()).
+    bool HitDistantSource(TracedRay& ray) const;
+    /// -I: a measuring point lying in the plane of a wall (a sensor on an
+    /// edge or in a corner) would send half its sample rays through that
+    /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point
+    /// `offset` off each such wall, to the side where the surface under the
+    /// sensor continues; elsewhere returns it unchanged.
+    Vec3 OffWallsThroughSensor(Vec3 point, const Vec3& normal, double offset) const;
+    /// Not const in `ts`: the shading normal it prints may warn (PerturbedNormal).
+    RayResult MakeResult(ThreadState& ts, const TracedRay& ray) const;
+
+    const ShadingSetup& s_;
+    DirectLight direct_;
+    IndirectLight indirect_;
+};
+
+}  // namespace rt

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#include "shading/shading_state.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace rt {
+namespace {
+
+bool HasGlowSky(const Scene& scene) {
+    for (const Surface& s : scene.surfaces) {
+        if (s.material >= 0 && scene.materials[s.material].type == MaterialType::Glow) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
+                           const ShadingOptions& shading_, const AmbientOptions& ambient_,
+                           const WarningSink& warn, std::shared_ptr<AmbientCache> cache_)
+    : scene(scene_), core(core_), shading(shading_), ambient(ambient_), cache(std::move(cache_)) {
+    lambertian.name = "Lamb";
+    lambertian.type = MaterialType::Plastic;
+    lambertian.args = {kPi, kPi, kPi, 0.0, 0.0};
+    lambertian.params = MakeMaterialParams(lambertian.type, lambertian.args);
+
+    // With indirect bounces, a glow sky lights the scene through ambient rays,
+    // so the absence of direct sources is not worth a warning (as Radiance).
+    const bool quiet = ambient.bounces > 0 && HasGlowSky(scene);
+    WarningSink sourceWarn = [&warn, quiet](const std::string& msg) {
+        if (quiet && msg == "no light sources found") return;
+        if (warn) warn(msg);
+    };
+    Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
+    sources = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
+
+    ambientList.insert(ambient.modifierList.begin(), ambient.modifierList.end());
+
+    shadowCheckCounts.resize(257);
+    for (size_t n = 0; n < shadowCheckCounts.size(); ++n) {
+        shadowCheckCounts[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
+    }
+
+    opaqueShadows = shading.backfaceVisible;
+    for (const Surface& s : scene.surfaces) {
+        if (s.material < 0) continue;
+        MaterialType t = scene.materials[s.material].type;
+        if (IsTransparentType(t) || t == MaterialType::Illum) opaqueShadows = false;
+    }
+    // A mixture may be partly a hole, or partly a transparent material.
+    for (const Pattern& p : scene.patterns) {
+        if (p.kind == ModifierKind::Mixture) opaqueShadows = false;
+    }
+}
+
+ThreadState::ThreadState(const ShadingSetup& setup, WarningSink warn_)
+    : warn(std::move(warn_)), rng(setup.shading.seed), sourceTallies(setup.sources.size()) {
+    if (setup.scene.functions) {
+        functionContext = std::make_unique<cal::Context>(*setup.scene.functions);
+    }
+}
+
+void ThreadState::EnableTiming(bool on) {
+    timing = on;
+    if (!on) return;
+    // The fastest of a few back-to-back reads: the clock's own cost.
+    double fastest = 1.0;
+    for (int i = 0; i < 64; ++i) {
+        const auto a = std::chrono::steady_clock::now();
+        const auto b = std::chrono::steady_clock::now();
+        fastest = std::min(fastest, std::chrono::duration<double>(b - a).count());
+    }
+    clockReadSeconds = fastest;
+}
+
+void ThreadState::StartInputRay(const ShadingOptions& shading, std::uint64_t rayIndex) {
+    rng.Seed(MixSeed(shading.seed, shading.uncorrelated ? rayIndex : 0));
+    firstAmbientSeen = false;
+    firstOutcome = RayResult::AmbientOutcome::None;
+    firstIndirectIrradiance = Rgb();
+}
+
+}  // namespace rt

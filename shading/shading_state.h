@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+//
+// The two kinds of state the ray tree works with, kept apart so that what is
+// shared is visibly read-only and what a ray changes is passed in by hand:
+//  - ShadingSetup: built once from the scene and the options, then only read
+//    while rays are traced (the ambient cache it points to synchronises
+//    itself and may be shared by several threads).
+//  - ThreadState: one per thread (one per Renderer): random numbers, the
+//    function language's evaluation context, source statistics, counters,
+//    scratch space, new records and the trace callback. Every function of
+//    the ray tree that changes something takes it as an argument.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "ambient/cache.h"
+#include "ambient/options.h"
+#include "cal/context.h"
+#include "core/diagnostics.h"
+#include "core/random.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+#include "raycore/raycore.h"
+#include "scene/scene.h"
+#include "shading/light_sources.h"
+#include "shading/options.h"
+#include "shading/ray_result.h"
+#include "shading/render_stats.h"
+
+namespace rt {
+
+/// Read-only while rays are traced.
+struct ShadingSetup {
+    /// `scene` and `core` must outlive the setup. Finds the light sources,
+    /// warning through `warn` ("no light sources found" only when no glow
+    /// sky lights the scene through indirect bounces, as Radiance). `cache`
+    /// may be null (the options need none) or shared.
+    ShadingSetup(const Scene& scene, const RayCore& core, const ShadingOptions& shading,
+                 const AmbientOptions& ambient, const WarningSink& warn,
+                 std::shared_ptr<AmbientCache> cache);
+
+    const Scene& scene;
+    const RayCore& core;
+    ShadingOptions shading;
+    AmbientOptions ambient;
+    std::vector<LightSource> sources;
+    /// Radiance's hidden "Lamb" material for -i/-I: plastic with reflectance
+    /// π, which turns reflected radiance into irradiance.
+    Material lambertian;
+    /// No surface can pass light (no trans, glass, dielectric, interface,
+    /// illum or mixture, and back faces are visible): shadow rays need only
+    /// any-hit tests.
+    bool opaqueShadows = true;
+    /// (int)(n^dc + 0.5) for small n: how many contributions -dc says to test
+    /// beyond the current one, without a std::pow per shading point.
+    std::vector<int> shadowCheckCounts;
+    std::unordered_set<std::string> ambientList;  // -ae/-ai modifier names
+    std::shared_ptr<AmbientCache> cache;          // only with -ab > 0 and -aa > 0
+};
+
+/// Radiance's per-source shadow-test statistics and aiming count (source.c,
+/// srcvalue()); they change as rays are traced, so each thread keeps its own.
+struct SourceTally {
+    // Shadow tests and unblocked ones: direct() estimates untested samples
+    // by their ratio.
+    long nhits = 1;
+    long ntests = 2;
+    // A sample ray that hits its source adds 1 (up to kAimCredit), one that
+    // misses it takes kAimRequired; below zero the warning "aiming failure"
+    // is printed, and again after the next hit and miss.
+    static constexpr int kAimRequired = 100;
+    static constexpr int kAimCredit = 2 * kAimRequired;
+    int aimSuccess = 2 * kAimRequired - 1;
+};
+
+/// One light-source sample's share of the direct term at a shading point.
+struct DirectContribution {
+    int source = -1;
+    Vec3 dir;
+    double distance = 0;  // to the sample point on the source
+    Rgb coef;             // material coefficient for this sample
+    Rgb value;            // unshadowed radiance ⊗ coef
+    double bright = 0;
+};
+
+/// Scratch space of one direct-light evaluation, kept between calls so that
+/// shading allocates nothing per point.
+struct DirectScratch {
+    std::vector<SourceSample> samples;
+    std::vector<SourcePartition> partitions;
+    std::vector<DirectContribution> contributions;
+    std::vector<DirectContribution> sortBuffer;
+    std::vector<double> tail;
+};
+
+/// Everything tracing changes: one per thread.
+struct ThreadState {
+    ThreadState(const ShadingSetup& setup, WarningSink warn);
+
+    /// Measure where time goes (RenderStats::seconds*); costs a few per cent.
+    void EnableTiming(bool on);
+    /// Starts input ray `rayIndex`: seeds the random numbers (-u+: a stream
+    /// per input position; -u-: the same for every ray) and forgets the
+    /// previous ray's first ambient outcome.
+    void StartInputRay(const ShadingOptions& shading, std::uint64_t rayIndex);
+    void Warn(const std::string& message) const {
+        if (warn) warn(message);
+    }
+
+    WarningSink warn;
+    Rng rng;
+    /// The function language's evaluation state (null without patterns).
+    std::unique_ptr<cal::Context> functionContext;
+    std::unordered_set<int> patternWarned;  // patterns whose compute errors were reported
+    std::unordered_set<const Surface*> perturbationWarned;  // illegal perturbations reported
+    std::vector<SourceTally> sourceTallies;  // one per ShadingSetup::sources
+    RenderStats stats;
+    std::vector<AmbientRecord> newRecords;  // made here, not yet handed out
+
+    // Nesting, for scratch space and for the ambient level.
+    std::vector<DirectScratch> directScratch;  // one set per direct-light depth
+    int directDepth = 0;
+    int ambientDepth = 0;  // nesting of hemisphere computations (Radiance's ambient depth)
+
+    // The indirect outcome at the first surface the current input ray shaded,
+    // for RayResult (reset per input ray).
+    RayResult::AmbientOutcome firstOutcome = RayResult::AmbientOutcome::None;
+    Rgb firstIndirectIrradiance;
+    bool firstAmbientSeen = false;
+
+    // Timing (rtrace -t).
+    bool timing = false;
+    /// Direct-light calls so far, of which every kDirectTimingStride-th is
+    /// timed and stands for the others (reading the clock around every call
+    /// would itself cost a noticeable share of the run).
+    std::uint64_t directCalls = 0;
+    static constexpr int kDirectTimingStride = 16;
+    /// Seconds between two back-to-back clock reads, which every timed
+    /// interval also holds.
+    double clockReadSeconds = 0;
+
+    // Trace output (-ot/-oT): called for every ray when it is done.
+    std::function<void(const RayResult&)> trace;
+    bool traceShadows = false;
+};
+
+}  // namespace rt
