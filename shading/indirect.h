@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 //
 // Internal to shading/: the indirect term, Radiance's multambient()
-// (radiance-notes.md §4.1) on top of the lazy irradiance cache in ambient/:
-// interpolate where records are good enough, otherwise sample a new
-// hemisphere and keep it as a record.
+// (radiance-notes.md §4.1): the -av fallback and the -ae/-ai lists here, and
+// the lazy irradiance cache's lookup-or-compute loop in ambient/
+// (IrradianceCache), given how to trace a hemisphere ray and a leak ray.
 #pragma once
 
-#include "ambient/hemisphere.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "shading/ray_result.h"
@@ -31,13 +30,6 @@ public:
 private:
     /// The fallback where no bounce is computed: -av, or its -aw average.
     Rgb Fallback(const Rgb& coefficient) const;
-    /// Samples a fresh hemisphere at the ray's hit point (ambient depth
-    /// raised for the duration). `coefficient` is the material's diffuse
-    /// coefficient; `weight` the record weight. Sample rays get the weights
-    /// Radiance gives them (§4.5): 0.5 of the parent's with the cache, their
-    /// share of the coefficient without.
-    Hemisphere Sample(ThreadState& ts, const TracedRay& ray, const Rgb& coefficient,
-                      double weight) const;
     /// -ae/-ai: the hit surface's modifier keeps the -av value.
     bool Excluded(const TracedRay& ray) const;
     /// Keeps how the input ray's first shaded surface got its indirect light.

@@ -1,29 +1,24 @@
 // SPDX-License-Identifier: MIT
 //
-// Counters a Renderer keeps for rtrace's end-of-run report (-t): what the
-// ambient cache did and how many rays were traced.
+// Counters a Renderer keeps for rtrace's end-of-run report (-t): how many
+// rays were traced, and (IrradianceCounters) what the ambient cache did.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "ambient/irradiance_cache.h"
+
 namespace rt {
 
-struct RenderStats {
+struct RenderStats : IrradianceCounters {
     std::uint64_t raysTraced = 0;        // every ray sent into the scene (not shadow rays)
     std::uint64_t shadowRays = 0;        // shadow rays actually tested
-    std::uint64_t leakRays = 0;          // leak-test rays of cache lookups (ambient/leak.h)
-    std::uint64_t ambientLookups = 0;    // cache queries
-    std::uint64_t ambientHits = 0;       // queries answered by interpolation
-    std::uint64_t hemispheres = 0;       // hemispheres sampled (records made or not)
-    std::vector<std::uint64_t> recordsPerLevel;  // records created, by ambient level
     std::uint64_t recordsLoaded = 0;     // records added from outside (ambient files)
 
     // Only measured when timing is on (Renderer::EnableTiming; rtrace -t),
-    // because reading the clock costs time of its own.
-    double secondsSampling = 0;  // hemisphere sampling, less the direct lighting and
-                                 // lookups done at its samples' hits
-    double secondsLookup = 0;    // cache lookups (interpolation)
+    // because reading the clock costs time of its own. secondsSampling (in
+    // IrradianceCounters) has the direct lighting at its samples' hits taken off.
     double secondsDirect = 0;    // direct lighting, shadow rays included; an estimate
                                  // from a sample of the calls (DirectLight::Add)
 };

@@ -70,7 +70,7 @@ const RenderStats& Renderer::Stats() const { return impl_->state.stats; }
 void Renderer::EnableTiming(bool on) { impl_->state.EnableTiming(on); }
 
 std::vector<AmbientRecord> Renderer::TakeNewRecords() {
-    return std::exchange(impl_->state.newRecords, {});
+    return std::exchange(impl_->state.ambient.newRecords, {});
 }
 
 std::vector<AmbientRecord> Renderer::CacheRecords() const {

@@ -20,7 +20,15 @@ bool HasGlowSky(const Scene& scene) {
 ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
                            const ShadingOptions& shading_, const AmbientOptions& ambient_,
                            const WarningSink& warn, std::shared_ptr<AmbientCache> cache_)
-    : scene(scene_), core(core_), shading(shading_), ambient(ambient_), cache(std::move(cache_)) {
+    : scene(scene_),
+      core(core_),
+      shading(shading_),
+      ambient(ambient_),
+      cache(std::move(cache_)),
+      irradiance(
+          IrradianceSettings{ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
+                             shading_.limits.weight, scene_.distanceTolerance},
+          cache) {
     lambertian.name = "Lamb";
     lambertian.type = MaterialType::Plastic;
     lambertian.args = {kPi, kPi, kPi, 0.0, 0.0};
@@ -64,6 +72,7 @@ ThreadState::ThreadState(const ShadingSetup& setup, WarningSink warn_)
 
 void ThreadState::EnableTiming(bool on) {
     timing = on;
+    ambient.timing = on;
     if (!on) return;
     // The fastest of a few back-to-back reads: the clock's own cost.
     double fastest = 1.0;

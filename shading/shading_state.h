@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "ambient/cache.h"
+#include "ambient/irradiance_cache.h"
 #include "ambient/options.h"
 #include "cal/context.h"
 #include "core/diagnostics.h"
@@ -60,7 +61,10 @@ struct ShadingSetup {
     /// beyond the current one, without a std::pow per shading point.
     std::vector<int> shadowCheckCounts;
     std::unordered_set<std::string> ambientList;  // -ae/-ai modifier names
-    std::shared_ptr<AmbientCache> cache;          // only with -ab > 0 and -aa > 0
+    /// The lookup-or-compute loop over the record store `cache` (only with
+    /// -ab > 0 and -aa > 0; null otherwise, and then every point samples).
+    std::shared_ptr<AmbientCache> cache;
+    IrradianceCache irradiance;
 };
 
 /// Radiance's per-source shadow-test statistics and aiming count (source.c,
@@ -120,12 +124,12 @@ struct ThreadState {
     std::unordered_set<const Surface*> perturbationWarned;  // illegal perturbations reported
     std::vector<SourceTally> sourceTallies;  // one per ShadingSetup::sources
     RenderStats stats;
-    std::vector<AmbientRecord> newRecords;  // made here, not yet handed out
+    /// The ambient depth, the records made here and not yet handed out, and
+    /// whether the cache's work is timed.
+    IrradianceThread ambient;
 
-    // Nesting, for scratch space and for the ambient level.
     std::vector<DirectScratch> directScratch;  // one set per direct-light depth
     int directDepth = 0;
-    int ambientDepth = 0;  // nesting of hemisphere computations (Radiance's ambient depth)
 
     // The indirect outcome at the first surface the current input ray shaded,
     // for RayResult (reset per input ray).

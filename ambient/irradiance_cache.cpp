@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+#include "ambient/irradiance_cache.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "ambient/leak.h"
+
+namespace rt {
+namespace {
+
+double Now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+/// Radiance's assumed average reflectance: makes deeper records count less
+/// (AVGREFL).
+constexpr double kAverageReflectance = 0.5;
+
+}  // namespace
+
+IrradianceCache::IrradianceCache(const IrradianceSettings& settings,
+                                 std::shared_ptr<AmbientCache> store)
+    : settings_(settings), store_(std::move(store)) {}
+
+double IrradianceCache::RecordWeight(int level, double rayWeight) {
+    // Below -lw, Russian roulette raises the survivors' weight to -lw, above
+    // 0.5^level; the record takes that weight too, or no query at this depth
+    // (all carrying -lw) could use it and every one would compute its own.
+    double weight = std::pow(kAverageReflectance, level);
+    if (rayWeight < 0.1 * weight) weight = 1.25 * rayWeight;
+    return std::max(weight, rayWeight);
+}
+
+std::optional<Rgb> IrradianceCache::Lookup(const AmbientQuery& query,
+                                           IrradianceCounters& counters, OccludedRef occluded,
+                                           int* used) const {
+    // Radiance 5's leak test: a record that saw a wall nearby in the query's
+    // direction is not used if the wall stands between them.
+    const auto hidden = [&](const AmbientRecord& record) {
+        if (!CorralCovers(record, query.point)) return false;
+        const LeakTest leak = MakeLeakTest(query.point, query.normal, record.position,
+                                           record.normal, settings_.distanceTolerance);
+        switch (leak.outcome) {
+            case LeakTest::Outcome::kVisible: return false;
+            case LeakTest::Outcome::kHidden: return true;
+            case LeakTest::Outcome::kTrace: break;
+        }
+        ++counters.leakRays;
+        return occluded(query.point, leak.dir, leak.length);
+    };
+    return store_->Interpolate(query, used, hidden);
+}
+
+Hemisphere IrradianceCache::Sample(const AmbientQuery& query, double weight,
+                                   IrradianceThread& thread, IrradianceCounters& counters,
+                                   Rng& rng, IrradianceTraceRef trace) const {
+    HemisphereOptions options;
+    options.divisions = settings_.divisions;
+    options.superSamples = settings_.superSamples;
+    options.weight = weight;
+    options.caching = store_ != nullptr;
+    const AmbientSampleShare share{options.caching, HemisphereDivisions(options).total()};
+    // Timing: only the outermost hemisphere counts (deeper ones are inside
+    // it), less the lookups its samples make.
+    const bool timeThis = thread.timing && thread.depth == 0;
+    const double start = timeThis ? Now() : 0.0;
+    const double lookupBefore = counters.secondsLookup;
+    ++thread.depth;
+    ++counters.hemispheres;
+    const double tolerance = settings_.distanceTolerance;
+    Hemisphere h = SampleHemisphere(query.normal, options, rng,
+                                    [&](const Vec3& dir) -> std::optional<AmbientSample> {
+                                        auto s = trace(dir, share);
+                                        // A hit at (or within rounding of) the
+                                        // point itself fails the division.
+                                        if (s && !(s->distance > tolerance)) return std::nullopt;
+                                        return s;
+                                    });
+    --thread.depth;
+    if (timeThis) {
+        counters.secondsSampling += (Now() - start) - (counters.secondsLookup - lookupBefore);
+    }
+    return h;
+}
+
+IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
+                                           double coefficientIntensity, IrradianceThread& thread,
+                                           IrradianceCounters& counters, Rng& rng,
+                                           IrradianceTraceRef trace, OccludedRef occluded) const {
+    using Source = IrradianceResult::Source;
+    AmbientQuery query = levelFree;
+    query.level = thread.depth;
+    if (!store_) {
+        // -aa 0: a fresh hemisphere for every shading point, sized by the
+        // ray's weight so that sample rays stay near -lw.
+        double weight = query.rayWeight;
+        const double lw = settings_.minimumWeight;
+        if (lw > 0) {
+            weight = std::min(weight, 0.8 * coefficientIntensity * query.rayWeight /
+                                          (std::max(settings_.divisions, 1) * lw));
+        }
+        const Hemisphere h = Sample(query, weight, thread, counters, rng, trace);
+        if (!h.anySample) return {};
+        return {h.value, Source::Computed};
+    }
+    ++counters.ambientLookups;
+    int used = 0;
+    const double lookupStart = thread.timing ? Now() : 0.0;
+    const std::optional<Rgb> interpolated = Lookup(query, counters, occluded, &used);
+    if (thread.timing) counters.secondsLookup += Now() - lookupStart;
+    if (interpolated) {
+        ++counters.ambientHits;
+        return {interpolated, used > 1 ? Source::Interpolated : Source::Extrapolated};
+    }
+    // A new record of this level.
+    const double weight = RecordWeight(thread.depth, query.rayWeight);
+    const int level = thread.depth;
+    const Hemisphere h = Sample(query, weight, thread, counters, rng, trace);
+    // No division got a sample (every ray refused, e.g. by -lr): Radiance's
+    // makeambient() failure, answered with the ambient value.
+    if (!h.anySample) return {};
+    if (auto record = MakeClassicRecord(query.point, query.normal, h, level, weight,
+                                        store_->limits())) {
+        const double a = settings_.accuracy;
+        record->corral =
+            CorralBits(h, record->radius[0] * a, 1.0 / store_->limits().BehindTolerance(a));
+        if (store_->Add(*record)) {
+            thread.newRecords.push_back(*record);
+            if (counters.recordsPerLevel.size() <= static_cast<size_t>(level)) {
+                counters.recordsPerLevel.resize(level + 1);
+            }
+            ++counters.recordsPerLevel[level];
+        }
+    }
+    // An incomplete hemisphere still gives a usable value; it is just not
+    // kept (Radiance's soft failure).
+    return {h.value, Source::Computed};
+}
+
+}  // namespace rt

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+//
+// The lazy irradiance cache's lookup-or-compute loop (Radiance's
+// multambient() and makeambient(), radiance-notes.md §4.1, §4.4): at a
+// shading point, interpolate the records good enough there (with the leak
+// test), otherwise sample a new hemisphere, weigh it as a record of the
+// current ambient level, give it its corral bits and keep it. Without a
+// record store (-aa 0) every point samples its own hemisphere.
+//
+// ambient/ knows nothing of rays or scenes: the caller passes how to trace
+// one hemisphere ray and how to test one leak ray. An IrradianceCache is
+// read-only and may serve any number of threads (its AmbientCache
+// synchronises itself); each thread passes its own IrradianceThread,
+// counters and random numbers.
+//
+//   IrradianceCache cache(settings, store);
+//   auto r = cache.Evaluate(query, thread, counters, rng, trace, occluded);
+//   if (r.value) colour = coefficient * *r.value;   // Ē times the material's
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ambient/cache.h"
+#include "ambient/hemisphere.h"
+#include "ambient/record.h"
+#include "core/function_ref.h"
+#include "core/random.h"
+#include "core/rgb.h"
+#include "core/vecmath.h"
+
+namespace rt {
+
+/// What the ambient calculation did, for rtrace's -t report.
+struct IrradianceCounters {
+    std::uint64_t leakRays = 0;        // leak-test rays of cache lookups (ambient/leak.h)
+    std::uint64_t ambientLookups = 0;  // cache queries
+    std::uint64_t ambientHits = 0;     // queries answered by interpolation
+    std::uint64_t hemispheres = 0;     // hemispheres sampled (records made or not)
+    std::vector<std::uint64_t> recordsPerLevel;  // records created, by ambient level
+
+    // Only measured with IrradianceThread::timing on, because reading the
+    // clock costs time of its own.
+    double secondsSampling = 0;  // outermost hemispheres, less the lookups their samples
+                                 // made (the caller takes off its own work, e.g. direct light)
+    double secondsLookup = 0;    // cache lookups (interpolation)
+};
+
+/// One thread's part of the loop; passed to every Evaluate.
+struct IrradianceThread {
+    /// Nesting of hemisphere computations (Radiance's ambient depth): a
+    /// query at depth d uses and makes records of level d.
+    int depth = 0;
+    /// Records made by this thread and not yet handed out (for ambient files).
+    std::vector<AmbientRecord> newRecords;
+    bool timing = false;
+};
+
+struct IrradianceSettings {
+    double accuracy = 0.1;    // -aa (> 0 with a store)
+    int divisions = 1024;     // -ad
+    int superSamples = 512;   // -as
+    double minimumWeight = 2e-3;  // -lw: without the cache, hemisphere sizes keep
+                                  // sample rays near it
+    /// Distances at or below this are a failed sample and need no leak ray
+    /// (Scene::distanceTolerance).
+    double distanceTolerance = 1e-6;
+};
+
+/// What one hemisphere ray needs besides its direction: how its value will
+/// be weighed, so that the caller can give the ray its importance.
+struct AmbientSampleShare {
+    /// With the cache, every sample ray weighs Radiance's average
+    /// reflectance, 0.5, of its parent; without it, its true share of the
+    /// coefficient, 1/divisions.
+    bool caching = true;
+    int divisions = 1;  // samples of the first pass
+};
+
+/// Traces one hemisphere ray from the query point (see AmbientTraceRef).
+using IrradianceTraceRef =
+    FunctionRef<std::optional<AmbientSample>(const Vec3& dir, const AmbientSampleShare& share)>;
+/// True when something blocks the segment from `from` along unit `dir` before
+/// `length` (the leak test's ray).
+using OccludedRef = FunctionRef<bool(const Vec3& from, const Vec3& dir, double length)>;
+
+struct IrradianceResult {
+    enum class Source : std::uint8_t {
+        Interpolated,  // from two or more records
+        Extrapolated,  // from a single record and its gradients
+        Computed,      // a fresh hemisphere (a record made, or not)
+        Failed,        // no hemisphere sample succeeded: use the fallback value
+    };
+    /// Ē = irradiance/π (W·sr⁻¹·m⁻²) at the query; nullopt when Failed.
+    std::optional<Rgb> value;
+    Source source = Source::Failed;
+};
+
+class IrradianceCache {
+public:
+    /// `store` may be null: no cache (-aa 0), every query samples.
+    IrradianceCache(const IrradianceSettings& settings, std::shared_ptr<AmbientCache> store);
+
+    /// Ē at `query` (whose level is taken from `thread.depth`). `coefficientIntensity`
+    /// is intens() of the material's diffuse coefficient, which sizes
+    /// cache-less hemispheres. Raises `thread.depth` while sampling, so that
+    /// the trace function's own queries are of the next level.
+    IrradianceResult Evaluate(const AmbientQuery& query, double coefficientIntensity,
+                              IrradianceThread& thread, IrradianceCounters& counters, Rng& rng,
+                              IrradianceTraceRef trace, OccludedRef occluded) const;
+
+    /// Radiance's weight of a new record at ambient level `level` for a ray
+    /// of weight `rayWeight` (§4.4): 0.5^level, or about the ray's own weight
+    /// when the ray matters much less than that; never below the ray weight.
+    static double RecordWeight(int level, double rayWeight);
+
+    const std::shared_ptr<AmbientCache>& store() const { return store_; }
+
+private:
+    std::optional<Rgb> Lookup(const AmbientQuery& query, IrradianceCounters& counters,
+                              OccludedRef occluded, int* used) const;
+    Hemisphere Sample(const AmbientQuery& query, double weight, IrradianceThread& thread,
+                      IrradianceCounters& counters, Rng& rng, IrradianceTraceRef trace) const;
+
+    IrradianceSettings settings_;
+    std::shared_ptr<AmbientCache> store_;
+};
+
+}  // namespace rt

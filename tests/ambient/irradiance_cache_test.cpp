@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: MIT
+//
+// The lookup-or-compute loop (IrradianceCache::Evaluate) against analytic
+// environments, without a scene: what it returns, when it makes records and
+// of which level and weight, the leak test's rays, the counters.
+#include "ambient/irradiance_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "core/conventions.h"
+
+namespace rt {
+namespace {
+
+constexpr double kAccuracy = 0.1;
+
+std::shared_ptr<AmbientCache> Store() {
+    // A 10-unit cube at -ar 32: radii between 0.3125 and 2.
+    return std::make_shared<AmbientCache>(Vec3(-5, -5, -5), 10.0, kAccuracy,
+                                          AmbientLimits::FromResolution(32, 10.0));
+}
+
+IrradianceSettings Settings() {
+    IrradianceSettings s;
+    s.accuracy = kAccuracy;
+    s.divisions = 256;
+    s.superSamples = 0;
+    return s;
+}
+
+AmbientQuery At(const Vec3& point, const Vec3& normal = {0, 0, 1}) {
+    AmbientQuery q;
+    q.point = point;
+    q.normal = q.shadingNormal = normal;
+    q.rayWeight = 1;
+    return q;
+}
+
+/// FunctionRef refers to callables, not plain functions: lambdas here.
+const auto NeverOccluded = [](const Vec3&, const Vec3&, double) { return false; };
+
+/// A uniform environment of radiance `L` at `distance` (a furnace).
+struct Furnace {
+    double L = 0.7;
+    double distance = 3;
+    int rays = 0;
+    std::optional<AmbientSample> operator()(const Vec3&, const AmbientSampleShare&) {
+        ++rays;
+        return AmbientSample{Rgb::Grey(L), distance};
+    }
+};
+
+TEST(IrradianceCache, FurnaceIsExactAndTheRecordIsReused) {
+    const IrradianceCache cache(Settings(), Store());
+    IrradianceThread thread;
+    IrradianceCounters counters;
+    Rng rng(1);
+    Furnace env;
+    const auto first = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, env, NeverOccluded);
+    ASSERT_TRUE(first.value);
+    EXPECT_EQ(first.source, IrradianceResult::Source::Computed);
+    EXPECT_NEAR(first.value->g, env.L, 1e-12);  // Ē = L in a furnace
+    ASSERT_EQ(thread.newRecords.size(), 1u);
+    EXPECT_EQ(thread.newRecords[0].level, 0);
+    EXPECT_EQ(thread.newRecords[0].weight, 1.0);
+    EXPECT_GT(env.rays, 200);
+    // Close by, the record answers without a ray.
+    const int raysBefore = env.rays;
+    const auto second =
+        cache.Evaluate(At({0.01, 0, 0}), 1.0, thread, counters, rng, env, NeverOccluded);
+    ASSERT_TRUE(second.value);
+    EXPECT_EQ(second.source, IrradianceResult::Source::Extrapolated);
+    EXPECT_NEAR(second.value->g, env.L, 1e-12);
+    EXPECT_EQ(env.rays, raysBefore);
+    EXPECT_EQ(counters.ambientLookups, 2u);
+    EXPECT_EQ(counters.ambientHits, 1u);
+    EXPECT_EQ(counters.hemispheres, 1u);
+    ASSERT_EQ(counters.recordsPerLevel.size(), 1u);
+    EXPECT_EQ(counters.recordsPerLevel[0], 1u);
+    EXPECT_EQ(thread.depth, 0);
+}
+
+TEST(IrradianceCache, WithoutAStoreEveryPointSamplesItsOwnHemisphere) {
+    const IrradianceCache cache(Settings(), nullptr);
+    IrradianceThread thread;
+    IrradianceCounters counters;
+    Rng rng(2);
+    Furnace env;
+    int divisions = 0;
+    const auto trace = [&](const Vec3& d, const AmbientSampleShare& share) {
+        EXPECT_FALSE(share.caching);
+        divisions = share.divisions;
+        return env(d, share);
+    };
+    for (int i = 0; i < 2; ++i) {
+        const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, trace,
+                                      NeverOccluded);
+        ASSERT_TRUE(r.value);
+        EXPECT_EQ(r.source, IrradianceResult::Source::Computed);
+        EXPECT_NEAR(r.value->g, env.L, 1e-12);
+    }
+    EXPECT_EQ(counters.hemispheres, 2u);
+    EXPECT_EQ(counters.ambientLookups, 0u);
+    EXPECT_TRUE(thread.newRecords.empty());
+    // The hemisphere is sized so that its sample rays stay near -lw: at weight
+    // 1 and intens 1, 0.8/(256·2e-3) = 1.56 > 1, so all of -ad 256: 9 rows ×
+    // 28 columns.
+    EXPECT_EQ(divisions, 9 * 28);
+    // A dark coefficient (intens 0.01) shrinks it to weight 0.0156, about 4
+    // divisions: one row of 3.
+    cache.Evaluate(At({0, 0, 0}), 0.01, thread, counters, rng, trace, NeverOccluded);
+    EXPECT_EQ(divisions, 1 * 3);
+}
+
+TEST(IrradianceCache, SamplesOfAHemisphereQueryTheNextLevel) {
+    const IrradianceCache cache(Settings(), Store());
+    IrradianceThread thread;
+    IrradianceCounters counters;
+    Rng rng(3);
+    Furnace inner;
+    int nestedQueries = 0;
+    // Each sample of the first hemisphere asks for the irradiance at its own
+    // hit point, one level down, as a diffuse surface there would.
+    const auto outer = [&](const Vec3& dir, const AmbientSampleShare& share)
+        -> std::optional<AmbientSample> {
+        EXPECT_TRUE(share.caching);
+        EXPECT_EQ(thread.depth, 1);
+        ++nestedQueries;
+        AmbientQuery q = At(dir * 2.0, -dir);
+        q.rayWeight = 0.5;
+        const auto r = cache.Evaluate(q, 0.5, thread, counters, rng, inner, NeverOccluded);
+        return AmbientSample{*r.value * 0.5, 2.0};
+    };
+    const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, outer, NeverOccluded);
+    ASSERT_TRUE(r.value);
+    EXPECT_NEAR(r.value->g, 0.5 * inner.L, 1e-12);
+    EXPECT_GT(nestedQueries, 100);
+    ASSERT_EQ(counters.recordsPerLevel.size(), 2u);
+    EXPECT_EQ(counters.recordsPerLevel[0], 1u);
+    EXPECT_GT(counters.recordsPerLevel[1], 1u);  // the level-1 records reuse each other
+    EXPECT_LT(counters.recordsPerLevel[1], static_cast<std::uint64_t>(nestedQueries));
+    for (const AmbientRecord& rec : thread.newRecords) {
+        EXPECT_EQ(rec.weight, rec.level == 0 ? 1.0 : 0.5) << rec;
+    }
+    EXPECT_EQ(thread.depth, 0);
+}
+
+TEST(IrradianceCache, RecordWeightFollowsTheLevelAndWeakRays) {
+    EXPECT_EQ(IrradianceCache::RecordWeight(0, 1.0), 1.0);
+    EXPECT_EQ(IrradianceCache::RecordWeight(2, 0.25), 0.25);
+    EXPECT_EQ(IrradianceCache::RecordWeight(2, 0.1), 0.25);   // not weak enough
+    EXPECT_EQ(IrradianceCache::RecordWeight(2, 0.02), 0.025); // 1.25 × the ray's
+    EXPECT_EQ(IrradianceCache::RecordWeight(1, 0.9), 0.9);    // never below the ray's
+}
+
+TEST(IrradianceCache, FailedHemisphereMakesNoRecordAndNoValue) {
+    const IrradianceCache cache(Settings(), Store());
+    IrradianceThread thread;
+    IrradianceCounters counters;
+    Rng rng(4);
+    int calls = 0;
+    // Every hit lies within the distance tolerance: every division fails.
+    const auto touching = [&](const Vec3&, const AmbientSampleShare&) {
+        ++calls;
+        return std::optional<AmbientSample>(AmbientSample{Rgb::Grey(1), 1e-9});
+    };
+    const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, touching,
+                                  NeverOccluded);
+    EXPECT_FALSE(r.value);
+    EXPECT_EQ(r.source, IrradianceResult::Source::Failed);
+    EXPECT_GT(calls, 0);
+    EXPECT_TRUE(thread.newRecords.empty());
+    EXPECT_EQ(cache.store()->size(), 0u);
+}
+
+/// A floor at z = 0 under an open sky with a curb along x = 0.05, 0.01 high:
+/// a record at the origin sees the curb only near its horizon, so its radius
+/// stays large, and its corral bits mark the curb's side (+x).
+const auto FloorAndWall = [](const Vec3& dir,
+                             const AmbientSampleShare&) -> std::optional<AmbientSample> {
+    if (dir.x > 0) {
+        const double t = 0.05 / dir.x;
+        if (t * dir.z < 0.01) return AmbientSample{Rgb::Grey(0.1), t};
+    }
+    return AmbientSample{Rgb::Grey(1.0), 100.0};
+};
+
+TEST(IrradianceCache, LeakTestRejectsRecordsBehindAWall) {
+    const IrradianceCache cache(Settings(), Store());
+    IrradianceThread thread;
+    IrradianceCounters counters;
+    Rng rng(5);
+    const auto made =
+        cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, FloorAndWall, NeverOccluded);
+    ASSERT_TRUE(made.value);
+    ASSERT_EQ(thread.newRecords.size(), 1u);
+    const AmbientRecord record = thread.newRecords[0];
+    ASSERT_NE(record.corral, 0u) << record;
+    ASSERT_GT(record.radius[0] * kAccuracy, 0.0) << record;
+    // Queries beside the record, within its validity, in the middle of a
+    // sector whose corral bit is set (toward the curb) and of one whose bit is
+    // clear (away from it).
+    const auto inSector = [&](bool set) {
+        for (int k = 0; k < 32; ++k) {
+            if (((record.corral >> k) & 1u) != (set ? 1u : 0u)) continue;
+            const double angle = (k + 0.5) * kPi / 16;
+            const Vec3 d = record.uAxis * std::cos(angle) + record.VAxis() * std::sin(angle);
+            return record.position + d * (0.5 * record.radius[0] * kAccuracy);
+        }
+        ADD_FAILURE() << "no sector with bit " << set << ": " << record;
+        return record.position;
+    };
+    // Toward the curb the leak ray is traced: clear, the record answers;
+    // blocked, it is refused and a new hemisphere made.
+    const Vec3 beside = inSector(true);
+    int leakRays = 0;
+    const auto clear = [&](const Vec3&, const Vec3&, double) {
+        ++leakRays;
+        return false;
+    };
+    IrradianceCounters c1;
+    const auto seen = cache.Evaluate(At(beside), 1.0, thread, c1, rng, FloorAndWall, clear);
+    EXPECT_EQ(seen.source, IrradianceResult::Source::Extrapolated);
+    EXPECT_EQ(c1.leakRays, 1u);
+    EXPECT_EQ(c1.hemispheres, 0u);
+    IrradianceCounters c2;
+    const auto blocked = cache.Evaluate(At(beside), 1.0, thread, c2, rng, FloorAndWall,
+                                        [&](const Vec3&, const Vec3&, double) {
+                                            ++leakRays;
+                                            return true;
+                                        });
+    EXPECT_EQ(blocked.source, IrradianceResult::Source::Computed);
+    EXPECT_EQ(c2.leakRays, 1u);
+    EXPECT_EQ(c2.hemispheres, 1u);
+    // Where no bit is set no ray is needed.
+    IrradianceCounters c3;
+    const int before = leakRays;
+    const auto away = cache.Evaluate(At(inSector(false)), 1.0, thread, c3, rng, FloorAndWall, clear);
+    EXPECT_NE(away.source, IrradianceResult::Source::Computed);
+    EXPECT_EQ(c3.leakRays, 0u);
+    EXPECT_EQ(leakRays, before);
+}
+
+}  // namespace
+}  // namespace rt
