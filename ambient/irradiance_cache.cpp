@@ -54,15 +54,19 @@ std::optional<Rgb> IrradianceCache::Lookup(const AmbientQuery& query,
     return store_->Interpolate(query, used, hidden);
 }
 
-Hemisphere IrradianceCache::Sample(const AmbientQuery& query, double weight,
-                                   IrradianceThread& thread, IrradianceCounters& counters,
-                                   Rng& rng, IrradianceTraceRef trace) const {
+IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, double weight,
+                                                 int level, IrradianceThread& thread,
+                                                 IrradianceCounters& counters, Rng& rng,
+                                                 IrradianceTraceRef trace) const {
     HemisphereOptions options;
     options.divisions = settings_.divisions;
     options.superSamples = settings_.superSamples;
     options.weight = weight;
     options.caching = store_ != nullptr;
-    const AmbientSampleShare share{options.caching, HemisphereDivisions(options).total()};
+    const bool hessian = settings_.method == RecordMethod::Hessian;
+    const int divisions = hessian ? HessianDivisions(options) * HessianDivisions(options)
+                                  : HemisphereDivisions(options).total();
+    const AmbientSampleShare share{options.caching, divisions};
     // Timing: only the outermost hemisphere counts (deeper ones are inside
     // it), less the lookups its samples make.
     const bool timeThis = thread.timing && thread.depth == 0;
@@ -71,19 +75,38 @@ Hemisphere IrradianceCache::Sample(const AmbientQuery& query, double weight,
     ++thread.depth;
     ++counters.hemispheres;
     const double tolerance = settings_.distanceTolerance;
-    Hemisphere h = SampleHemisphere(query.normal, options, rng,
-                                    [&](const Vec3& dir) -> std::optional<AmbientSample> {
-                                        auto s = trace(dir, share);
-                                        // A hit at (or within rounding of) the
-                                        // point itself fails the division.
-                                        if (s && !(s->distance > tolerance)) return std::nullopt;
-                                        return s;
-                                    });
+    const auto sample = [&](const Vec3& dir) -> std::optional<AmbientSample> {
+        auto s = trace(dir, share);
+        // A hit at (or within rounding of) the point itself fails the division.
+        if (s && !(s->distance > tolerance)) return std::nullopt;
+        return s;
+    };
+    Sampled out;
+    if (hessian) {
+        const HessianHemisphere h = SampleHessianHemisphere(query.point, query.normal, options,
+                                                            settings_.farDistance, rng, sample);
+        if (h.anySample) out.value = h.value;
+        if (h.anySample && level >= 0) {
+            out.record = MakeHessianRecord(h, level, weight, settings_.accuracy, store_->limits());
+        }
+    } else {
+        const Hemisphere h = SampleHemisphere(query.normal, options, rng, sample);
+        if (h.anySample) out.value = h.value;
+        if (h.anySample && level >= 0) {
+            out.record = MakeClassicRecord(query.point, query.normal, h, level, weight,
+                                           store_->limits());
+            if (out.record) {
+                const double a = settings_.accuracy;
+                out.record->corral = CorralBits(h, out.record->radius[0] * a,
+                                                1.0 / store_->limits().BehindTolerance(a));
+            }
+        }
+    }
     --thread.depth;
     if (timeThis) {
         counters.secondsSampling += (Now() - start) - (counters.secondsLookup - lookupBefore);
     }
-    return h;
+    return out;
 }
 
 IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
@@ -102,8 +125,8 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
             weight = std::min(weight, 0.8 * coefficientIntensity * query.rayWeight /
                                           (std::max(settings_.divisions, 1) * lw));
         }
-        const Hemisphere h = Sample(query, weight, thread, counters, rng, trace);
-        if (!h.anySample) return {};
+        const Sampled h = Sample(query, weight, -1, thread, counters, rng, trace);
+        if (!h.value) return {};
         return {h.value, Source::Computed};
     }
     ++counters.ambientLookups;
@@ -118,15 +141,11 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
     // A new record of this level.
     const double weight = RecordWeight(thread.depth, query.rayWeight);
     const int level = thread.depth;
-    const Hemisphere h = Sample(query, weight, thread, counters, rng, trace);
+    const Sampled h = Sample(query, weight, level, thread, counters, rng, trace);
     // No division got a sample (every ray refused, e.g. by -lr): Radiance's
     // makeambient() failure, answered with the ambient value.
-    if (!h.anySample) return {};
-    if (auto record = MakeClassicRecord(query.point, query.normal, h, level, weight,
-                                        store_->limits())) {
-        const double a = settings_.accuracy;
-        record->corral =
-            CorralBits(h, record->radius[0] * a, 1.0 / store_->limits().BehindTolerance(a));
+    if (!h.value) return {};
+    if (const auto& record = h.record) {
         if (store_->Add(*record)) {
             thread.newRecords.push_back(*record);
             if (counters.recordsPerLevel.size() <= static_cast<size_t>(level)) {

@@ -25,6 +25,7 @@
 
 #include "ambient/cache.h"
 #include "ambient/hemisphere.h"
+#include "ambient/hessian.h"
 #include "ambient/record.h"
 #include "core/function_ref.h"
 #include "core/random.h"
@@ -58,7 +59,18 @@ struct IrradianceThread {
     bool timing = false;
 };
 
+/// How a new hemisphere is sampled and turned into a record.
+enum class RecordMethod {
+    /// Ward's stratified hemisphere and split-sphere records with Ward &
+    /// Heckbert's gradients (Radiance ≤ 4.2; hemisphere.h).
+    Classic,
+    /// Radiance 5's square grid and elliptical records from the hemisphere's
+    /// Hessian, with occlusion-aware gradients (hessian.h).
+    Hessian,
+};
+
 struct IrradianceSettings {
+    RecordMethod method = RecordMethod::Classic;
     double accuracy = 0.1;    // -aa (> 0 with a store)
     int divisions = 1024;     // -ad
     int superSamples = 512;   // -as
@@ -67,6 +79,9 @@ struct IrradianceSettings {
     /// Distances at or below this are a failed sample and need no leak ray
     /// (Scene::distanceTolerance).
     double distanceTolerance = 1e-6;
+    /// Hessian records: hit points farther than this (scene units) are stored
+    /// this far (HessianFarDistance of the scene cube).
+    double farDistance = HessianFarDistance(1.0);
 };
 
 /// What one hemisphere ray needs besides its direction: how its value will
@@ -121,8 +136,15 @@ public:
 private:
     std::optional<Rgb> Lookup(const AmbientQuery& query, IrradianceCounters& counters,
                               OccludedRef occluded, int* used) const;
-    Hemisphere Sample(const AmbientQuery& query, double weight, IrradianceThread& thread,
-                      IrradianceCounters& counters, Rng& rng, IrradianceTraceRef trace) const;
+    /// A fresh hemisphere at the query by the settings' method: its value Ē
+    /// (nullopt when no sample succeeded) and, when `level` >= 0 and it is
+    /// good enough, the record made from it (of that level and `weight`).
+    struct Sampled {
+        std::optional<Rgb> value;
+        std::optional<AmbientRecord> record;
+    };
+    Sampled Sample(const AmbientQuery& query, double weight, int level, IrradianceThread& thread,
+                   IrradianceCounters& counters, Rng& rng, IrradianceTraceRef trace) const;
 
     IrradianceSettings settings_;
     std::shared_ptr<AmbientCache> store_;

@@ -17,6 +17,7 @@
 #include <cstdint>
 
 #include "ambient/hemisphere.h"
+#include "ambient/hessian.h"
 #include "ambient/record.h"
 #include "core/vecmath.h"
 
@@ -45,6 +46,18 @@ struct LeakTest {
 /// minarad·a + 0.001).
 std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius,
                          double maxInverseDistance);
+
+/// The same for a Radiance 5 hemisphere (ambcorral, §4.7 step 7) and a record
+/// with unit u-axis `u` (v = n × u) and validity semi-axes `validityRadius0`
+/// along u and `validityRadius1` along v (its radii times -aa): the samples
+/// are the cells on the grid's perimeter, each flagging the sectors within
+/// π/(2ns) of its azimuth when it hit something nearer than the ellipse's
+/// reach in its direction, sqrt((R0·x)² + (R1·y)²)/sqrt(x² + y²). Zero for
+/// fewer than 8 cells per axis or an incomplete hemisphere. Unlike Radiance
+/// 5, near occluders flag too, and there is no "ceiling too low" rule
+/// (leak.cpp says why).
+std::uint32_t CorralBits(const HessianHemisphere& hemisphere, const Vec3& u,
+                         double validityRadius0, double validityRadius1);
 
 /// True if `record`'s corral bit for the direction of `point` is set, so that
 /// the leak test must look (records without bits never leak).

@@ -28,6 +28,10 @@ struct AmbientOptions {
     int resolution = 256;       // -ar
     int divisions = 1024;       // -ad
     int superSamples = 512;     // -as
+    /// -ah (lazyrad's own): new records by Radiance 5's Hessian method
+    /// (elliptical radii, occlusion-aware gradients) instead of the classic
+    /// split-sphere records (ambient/irradiance_cache.h RecordMethod).
+    bool hessianRecords = false;
     std::string file;           // -af, empty for none
     /// -ae/-aE (exclude) or -ai/-aI (include) modifier names; the first use of
     /// the other kind restarts the list (Radiance's rule).

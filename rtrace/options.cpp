@@ -302,6 +302,9 @@ constexpr OptionRow kOptionRows[] = {
     Int("-ar", "ambient resolution", [](RtraceOptions& o) -> int& { return o.ambient.resolution; }),
     Int("-ad", "ambient divisions", [](RtraceOptions& o) -> int& { return o.ambient.divisions; }),
     Int("-as", "ambient super-samples", [](RtraceOptions& o) -> int& { return o.ambient.superSamples; }),
+    // lazyrad's own; not in -defaults, whose output stays Radiance's.
+    Toggle("-ah", "Hessian ambient records (Radiance 5's method)",
+           [](RtraceOptions& o) -> bool& { return o.ambient.hessianRecords; }),
     Int("-ab", "ambient bounces", [](RtraceOptions& o) -> int& { return o.ambient.bounces; }),
     Word("-ai", "ambient include modifier",
          [](RtraceOptions& o, const std::string& v) {

@@ -26,8 +26,11 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
       ambient(ambient_),
       cache(std::move(cache_)),
       irradiance(
-          IrradianceSettings{ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
-                             shading_.limits.weight, scene_.distanceTolerance},
+          IrradianceSettings{
+              ambient_.hessianRecords ? RecordMethod::Hessian : RecordMethod::Classic,
+              ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
+              shading_.limits.weight, scene_.distanceTolerance,
+              HessianFarDistance(scene_.cubeSize)},
           cache) {
     lambertian.name = "Lamb";
     lambertian.type = MaterialType::Plastic;

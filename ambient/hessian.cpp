@@ -1,0 +1,605 @@
+// SPDX-License-Identifier: MIT
+//
+// Radiance 5's hemisphere sampler, super-sampling, occlusion-aware Hessian,
+// elliptical radii, gradients and corral (radiance-notes.md §4.5–4.7,
+// Radiance 5.4 ambcomp.c), after Schwarzhaupt, Jensen & Jarosz (2012).
+// Written from the formulas, not from that code.
+#include "ambient/hessian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "ambient/leak.h"
+#include "ambient/options.h"
+#include "core/check.h"
+#include "core/conventions.h"
+
+namespace rt {
+namespace {
+
+/// Radiance makes records with the coefficient AVGREFL = 0.5 and tests its
+/// values scaled by it (bright(0.5·Ē) > FTINY).
+constexpr double kAvgRefl = 0.5;
+/// ns² = kMaxAmbientDivisions at most, whatever -ad·weight asks for.
+constexpr int kMaxDivisionsPerAxis = 2048;
+static_assert(kMaxDivisionsPerAxis * kMaxDivisionsPerAxis <= kMaxAmbientDivisions);
+/// Super-sampling needs more than this many extra samples and more than this
+/// many cells (Radiance's n > 8 and sampOK > MINADIV²).
+constexpr int kMinSuperSamples = 9;
+constexpr int kMinSuperSampleCells = kMinHessianDivisions * kMinHessianDivisions + 1;
+/// Radiance re-draws a colliding first sample until it fits and never gives
+/// up; a neighbour's exclusion cone (half-angle π/(4ns)) is too small to cover
+/// a cell, so this bound only stops a trace callback that returns nonsense.
+constexpr int kMaxRedraws = 64;
+
+/// The six orders of the three axes, one picked at random by Radiance's
+/// getperpendicular().
+constexpr int kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+
+/// Radiance's getperpendicular(n, randomize = 1): the azimuth of the frame is
+/// random but not uniform (it leans toward the chosen axis), and Radiance 5
+/// draws it for every hemisphere, even with -u-.
+Vec3 RandomPerpendicular(const Vec3& n, Rng& rng) {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = 0.5 - rng.Uniform();
+    const int pick = std::min(5, static_cast<int>(6.0 * rng.Uniform()));
+    const int* order = kAxisOrders[pick];
+    for (int i = 2; i >= 0; --i) {
+        if (std::fabs(n[order[i]]) < 0.6) {
+            v[order[i]] = 1.0;
+            break;
+        }
+    }
+    // v has a unit component where |n| < 0.6 and the others within ±0.5, so
+    // it is never parallel to n.
+    return Normalize(Cross(v, n));
+}
+
+/// The cosine-weighted direction of square point ((j + xi1)/ns, (i + xi0)/ns).
+Vec3 CellDirection(const Frame& frame, int ns, int i, int j, double xi0, double xi1) {
+    const DiscPoint p = SquareToDisc((j + xi1) / ns, (i + xi0) / ns);
+    const double z = std::sqrt(std::max(0.0, 1.0 - p.x * p.x - p.y * p.y));
+    return frame.u * p.x + frame.v * p.y + frame.n * z;
+}
+
+std::size_t Index(int ns, int i, int j) {
+    return static_cast<std::size_t>(i) * static_cast<std::size_t>(ns) + static_cast<std::size_t>(j);
+}
+
+/// Radiance's ambcollision(): whether unit `dir` for cell (i, j) lies within
+/// π/(4ns) of the hit direction of an already sampled neighbour. Coincident
+/// directions would make the triangles between them degenerate.
+bool Collides(const HessianHemisphere& h, int i, int j, const Vec3& dir) {
+    const double limit = kPi / (4.0 * h.ns);
+    const double cosLimit = 1.0 - 0.5 * limit * limit;
+    for (int ii = std::max(0, i - 1); ii <= std::min(h.ns - 1, i + 1); ++ii) {
+        for (int jj = std::max(0, j - 1); jj <= std::min(h.ns - 1, j + 1); ++jj) {
+            if (ii == i && jj == j)
+                continue;
+            const HessianCell& c = h.At(ii, jj);
+            if (c.samples == 0)
+                continue;
+            if (Dot(c.offset, dir) >= cosLimit * Length(c.offset))
+                return true;
+        }
+    }
+    return false;
+}
+
+/// Traces sample `n` (0 = first) of cell (i, j) along unit `dir` and folds it
+/// into the cell; false when the ray failed (the cell keeps what it had).
+bool SampleCell(HessianHemisphere& h, int i, int j, const Vec3& dir, int n, double farDistance,
+                AmbientTraceRef trace) {
+    ++h.raysTraced;
+    const std::optional<AmbientSample> s = trace(dir);
+    // Distances at or below Radiance's FTINY are refused by the callback
+    // (AmbientTraceRef's contract, which knows the scene's tolerance).
+    if (!s || !(s->distance > 0) || !IsFinite(s->radiance))
+        return false;
+    const Rgb radiance(std::max(s->radiance.r, 0.0), std::max(s->radiance.g, 0.0),
+                       std::max(s->radiance.b, 0.0));
+    HessianCell& c = h.cells[Index(h.ns, i, j)];
+    c.inverseDistance = std::max(c.inverseDistance, 1.0 / s->distance);
+    if (n == 0) {
+        c.offset = dir * std::min(s->distance, farDistance);
+        c.radiance = radiance;
+        c.samples = 1;
+    } else {
+        // Radiance's (n·v + L)/(n + 1), written so a constant stays exact.
+        c.radiance += (radiance - c.radiance) * (1.0 / (n + 1));
+        ++c.samples;
+    }
+    return true;
+}
+
+}  // namespace
+
+namespace detail {
+
+std::vector<double> ContrastEstimates(const HessianHemisphere& h) {
+    const int ns = h.ns;
+    std::vector<double> e(h.cells.size(), 0.0);
+    auto pair = [&](std::size_t a, std::size_t b) {
+        const double la = Bright(h.cells[a].radiance);
+        const double lb = Bright(h.cells[b].radiance);
+        // Two black cells: Radiance's 0/0 is a NaN that silently disables
+        // super-sampling for the whole hemisphere; no difference is what it means.
+        if (!(la + lb > 0))
+            return;
+        const double d = la - lb;
+        const double term = d * d / (la + lb);
+        e[a] += term;
+        e[b] += term;
+    };
+    for (int i = 0; i < ns; ++i) {
+        for (int j = 0; j < ns; ++j) {
+            const std::size_t k = Index(ns, i, j);
+            if (i > 0)
+                pair(k, Index(ns, i - 1, j));
+            if (j > 0)
+                pair(k, Index(ns, i, j - 1));
+            if (i > 0 && j > 0)
+                pair(k, Index(ns, i - 1, j - 1));
+        }
+    }
+    // Radiance scales border cells by 8/5 and corners by 8/3, as if every cell
+    // had a term for each of its 8 neighbours; the anti-diagonal pairs are
+    // never compared, so an interior cell has 6, a border cell 4 and the
+    // corners 3 or 2. Kept: it decides where the samples go.
+    const int last = ns - 1;
+    for (const std::size_t k :
+         {Index(ns, 0, 0), Index(ns, 0, last), Index(ns, last, 0), Index(ns, last, last)})
+        e[k] *= 8.0 / 3.0;
+    for (int t = 1; t < last; ++t) {
+        for (const std::size_t k :
+             {Index(ns, t, 0), Index(ns, t, last), Index(ns, 0, t), Index(ns, last, t)})
+            e[k] *= 8.0 / 5.0;
+    }
+    return e;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// Radiance's ambsupersamp(): `count` extra samples shared out in one pass
+/// over the cells in proportion to their contrast estimates, each cell's share
+/// rounded at random; never more than `count` in total.
+void SuperSample(HessianHemisphere& h, int count, double farDistance, Rng& rng,
+                 AmbientTraceRef trace) {
+    const std::vector<double> e = detail::ContrastEstimates(h);
+    double remaining = 0;
+    for (const double x : e)
+        remaining += x;
+    for (int i = 0; i < h.ns; ++i) {
+        for (int j = 0; j < h.ns; ++j) {
+            // Radiance's FTINY, in units of radiance.
+            if (remaining <= kFtiny)
+                return;
+            const double share = e[Index(h.ns, i, j)];
+            const int wanted = static_cast<int>(share / remaining * count + rng.Uniform());
+            for (int n = 1; n <= wanted; ++n) {
+                const double xi0 = rng.Uniform();
+                const double xi1 = rng.Uniform();
+                const Vec3 dir = CellDirection(h.frame, h.ns, i, j, xi0, xi1);
+                if (!SampleCell(h, i, j, dir, n, farDistance, trace))
+                    break;
+                ++h.superSamples;
+                if (--count == 0)
+                    return;
+            }
+            remaining -= share;
+        }
+    }
+}
+
+/// Normalised brightness of each cell (see HessianEstimate); `radiometric`
+/// receives whether Ē was bright enough for it.
+std::vector<double> NormalisedBrightness(const HessianHemisphere& h, bool* radiometric) {
+    std::vector<double> y(h.cells.size(), 1.0);
+    const double b = Bright(h.value);
+    *radiometric = kAvgRefl * b > kFtiny;
+    // Otherwise Radiance's Y = bright(v)·B + 1 differs from 1 by under 1e-12.
+    if (*radiometric) {
+        const double scale = 0.99 / b;
+        for (std::size_t k = 0; k < y.size(); ++k)
+            y[k] = Bright(h.cells[k].radiance) * scale + 0.01;
+    }
+    return y;
+}
+
+std::array<double, 2> RotationalGradientOf(const HessianHemisphere& h, const std::vector<double>& y,
+                                           const Vec3& u, const Vec3& v) {
+    // Per cell, brightness times tanθ resolved along the azimuth + 90°: the
+    // cosine-weighted mean of L·(ω·(a × n))/(ω·n) is the relative change of E
+    // as n turns about a.
+    double sum0 = 0, sum1 = 0;
+    const Vec3& n = h.frame.n;
+    for (std::size_t k = 0; k < h.cells.size(); ++k) {
+        const Vec3& w = h.cells[k].offset;
+        const double f = y[k] / Dot(n, w);
+        sum0 -= Dot(v, w) * f;
+        sum1 += Dot(u, w) * f;
+    }
+    const double cells = static_cast<double>(h.cells.size());
+    return {sum0 / cells, sum1 / cells};
+}
+
+void AddScaled(Matrix3& a, const Matrix3& b, double s) {
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            a.m[i][j] += s * b.m[i][j];
+    }
+}
+
+/// a·bᵀ + b·aᵀ, added s times.
+void AddSymmetric(Matrix3& m, const Vec3& a, const Vec3& b, double s) {
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            m.m[i][j] += s * (a[i] * b[j] + b[i] * a[j]);
+    }
+}
+
+bool IsFinite(const Matrix3& a) {
+    for (const auto& row : a.m) {
+        for (const double x : row) {
+            if (!std::isfinite(x))
+                return false;
+        }
+    }
+    return true;
+}
+
+/// Radiance's quadratic() for a = 1: real roots of λ² + bλ + c in ascending
+/// order, a discriminant within ±1e-12 counting as one double root.
+int MonicRoots(double b, double c, double roots[2]) {
+    const double halfB = 0.5 * b;
+    double disc = halfB * halfB - c;
+    constexpr double kTiny2 = kFtiny * kFtiny;
+    if (disc < -kTiny2)
+        return 0;
+    if (disc <= kTiny2) {
+        roots[0] = -halfB;
+        return 1;
+    }
+    disc = std::sqrt(disc);
+    roots[0] = -halfB - disc;
+    roots[1] = -halfB + disc;
+    return 2;
+}
+
+}  // namespace
+
+DiscPoint SquareToDisc(double x, double y) {
+    const double a = 2.0 * x - 1.0;
+    const double b = 2.0 * y - 1.0;
+    double r, phi;
+    if (a > -b) {
+        if (a > b) {
+            r = a;
+            phi = 0.25 * kPi * (b / a);
+        } else {
+            r = b;
+            phi = 0.25 * kPi * (2.0 - a / b);
+        }
+    } else {
+        if (a < b) {
+            r = -a;
+            phi = 0.25 * kPi * (4.0 + b / a);
+        } else {
+            r = -b;
+            phi = b != 0.0 ? 0.25 * kPi * (6.0 - a / b) : 0.0;
+        }
+    }
+    r *= 0.9999999999999;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+int HessianDivisions(const HemisphereOptions& options) {
+    const double wanted = static_cast<double>(options.divisions) * options.weight;
+    int ns = 0;
+    // !(wanted > 0) also catches a NaN weight.
+    if (wanted > 0)
+        ns = static_cast<int>(std::sqrt(std::min(wanted, 1e12)) + 0.5);
+    return std::clamp(ns, options.caching ? kMinHessianDivisions : 1, kMaxDivisionsPerAxis);
+}
+
+HessianHemisphere SampleHessianHemisphere(const Vec3& point, const Vec3& normal,
+                                          const HemisphereOptions& options, double farDistance,
+                                          Rng& rng, AmbientTraceRef trace) {
+    RT_DCHECK(LengthSquared(normal) > 0);
+    HessianHemisphere h;
+    h.point = point;
+    const Vec3 n = Normalize(normal);
+    const Vec3 u = RandomPerpendicular(n, rng);
+    h.frame = Frame{u, Cross(n, u), n};
+    const int ns = HessianDivisions(options);
+    h.ns = ns;
+    h.cells.assign(static_cast<std::size_t>(ns) * static_cast<std::size_t>(ns), HessianCell{});
+
+    // Radiance's order, last cell first: the collision test looks at whichever
+    // neighbours are already sampled.
+    int succeeded = 0;
+    for (int i = ns - 1; i >= 0; --i) {
+        for (int j = ns - 1; j >= 0; --j) {
+            Vec3 dir;
+            for (int draw = 0; draw <= kMaxRedraws; ++draw) {
+                const double xi0 = rng.Uniform();
+                const double xi1 = rng.Uniform();
+                dir = CellDirection(h.frame, ns, i, j, xi0, xi1);
+                if (!Collides(h, i, j, dir))
+                    break;
+            }
+            succeeded += SampleCell(h, i, j, dir, 0, farDistance, trace) ? 1 : 0;
+        }
+    }
+    const int cells = ns * ns;
+    h.complete = succeeded == cells;
+    h.anySample = succeeded > 0;
+
+    const double extraWanted = std::max(0.0, options.superSamples * options.weight);
+    const int extra = static_cast<int>(std::min(extraWanted, 1e9) + 0.5);
+    if (h.complete && cells >= kMinSuperSampleCells && extra >= kMinSuperSamples)
+        SuperSample(h, extra, farDistance, rng, trace);
+
+    Rgb sum;
+    for (const HessianCell& c : h.cells)
+        sum += c.radiance;
+    h.value = sum * (1.0 / cells);
+    return h;
+}
+
+double Matrix3::Form(const Vec3& a, const Vec3& b) const {
+    double s = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            s += a[i] * m[i][j] * b[j];
+    }
+    return s;
+}
+
+namespace detail {
+
+FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n) {
+    const Vec3 e = r1 - r0;
+    const Vec3 c = Cross(r0, r1);
+    const double cc = LengthSquared(c);
+    const double ee = LengthSquared(e);
+    const double er0 = Dot(e, r0);
+    const double er1 = Dot(e, r1);
+    const double s0 = 1.0 / LengthSquared(r0);
+    const double s1 = 1.0 / LengthSquared(r1);
+    const double se = 1.0 / ee;
+    // I1 = angle(r0, r1)/|c|; atan2 rather than Radiance's acos of the cosine,
+    // which loses half its digits for the small angles between neighbours.
+    const double i1 = std::atan2(std::sqrt(cc), Dot(r0, r1)) / std::sqrt(cc);
+    const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 / cc;
+    const double j2 = (0.5 * (s0 - s1) - er0 * i2) * se;
+    const Vec3 q = r0 * i2 + e * j2;
+    const Vec3 nxe = Cross(n, e);
+    const double nc = Dot(n, c);
+
+    FormFactorEdge out;
+    out.gradient = (nxe * i1 + q * (2.0 * nc)) * (0.5 / kPi);
+
+    const double i3 = (er1 * s1 * s1 - er0 * s0 * s0 + 3.0 * ee * i2) / (4.0 * cc);
+    const double j3 = 0.25 * se * (s0 * s0 - s1 * s1) - er0 * se * i3;
+    const double k3 = se * (i2 - i3 / s0 - 2.0 * er0 * j3);
+    Matrix3& h = out.hessian;
+    AddSymmetric(h, nxe, q, 1.0);
+    AddSymmetric(h, r0, r0, 2.0 * nc * i3);
+    AddSymmetric(h, e, e, 2.0 * nc * k3);
+    AddSymmetric(h, r0, e, 4.0 * nc * j3);
+    for (int k = 0; k < 3; ++k)
+        h.m[k][k] -= nc * i2;
+    for (auto& row : h.m) {
+        for (double& x : row)
+            x *= -1.0 / kPi;
+    }
+    return out;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// EstimateHessian() for normalised brightness `y`.
+HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<double>& y,
+                             bool radiometric) {
+    HessianEstimate est;
+    est.radiometric = radiometric;
+    const int ns = h.ns;
+    const Vec3& n = h.frame.n;
+    // Each triangle takes the brightness of its farthest vertex (smallest
+    // 1/d; ties as Radiance's back_ambval), so a triangle spanning a depth
+    // edge belongs to the background and the near occluder's silhouette
+    // stands out: that is what makes the Hessian occlusion-aware.
+    auto farthest = [&](std::size_t a, std::size_t b, std::size_t c) {
+        const double da = h.cells[a].inverseDistance;
+        const double db = h.cells[b].inverseDistance;
+        const double dc = h.cells[c].inverseDistance;
+        if (da <= db)
+            return da <= dc ? y[a] : y[c];
+        return db <= dc ? y[b] : y[c];
+    };
+    // Cell (i, j)'s two triangles, counter-clockwise seen from above:
+    // T1 = (i,j) → (i,j+1) → (i+1,j) and T2 = (i+1,j+1) → (i+1,j) → (i,j+1).
+    auto t1 = [&](int i, int j) {
+        return farthest(Index(ns, i, j), Index(ns, i, j + 1), Index(ns, i + 1, j));
+    };
+    auto t2 = [&](int i, int j) {
+        return farthest(Index(ns, i + 1, j + 1), Index(ns, i + 1, j), Index(ns, i, j + 1));
+    };
+    // Σ_T Y_T Σ_{edges of T} is summed per edge: an inner edge is traversed
+    // once each way by its two triangles, so it counts (Y_T − Y_T') times and
+    // drops out where both have the same brightness (Radiance's book-keeping
+    // optimisation, exact here).
+    auto edge = [&](int ia, int ja, int ib, int jb, double coefficient) {
+        if (coefficient == 0)
+            return;
+        const detail::FormFactorEdge t =
+            detail::FormFactorEdgeTerms(h.At(ia, ja).offset, h.At(ib, jb).offset, n);
+        est.gradient += t.gradient * coefficient;
+        AddScaled(est.hessian, t.hessian, coefficient);
+    };
+    const int last = ns - 1;
+    for (int i = 0; i < ns; ++i) {
+        for (int j = 0; j < last; ++j) {
+            // (i,j) → (i,j+1): in T1(i,j); reversed in T2(i−1,j).
+            edge(i, j, i, j + 1, (i < last ? t1(i, j) : 0.0) - (i > 0 ? t2(i - 1, j) : 0.0));
+        }
+    }
+    for (int i = 0; i < last; ++i) {
+        for (int j = 0; j < ns; ++j) {
+            // (i,j) → (i+1,j): in T2(i,j−1); reversed in T1(i,j).
+            edge(i, j, i + 1, j, (j > 0 ? t2(i, j - 1) : 0.0) - (j < last ? t1(i, j) : 0.0));
+        }
+        for (int j = 0; j < last; ++j) {
+            // (i,j+1) → (i+1,j): in T1(i,j); reversed in T2(i,j).
+            edge(i, j + 1, i + 1, j, t1(i, j) - t2(i, j));
+        }
+    }
+    if (!est.radiometric)
+        est.gradient = Vec3();
+    return est;
+}
+
+}  // namespace
+
+HessianEstimate EstimateHessian(const HessianHemisphere& h) {
+    RT_CHECK(h.complete && h.ns >= 2);
+    bool radiometric = false;
+    const std::vector<double> y = NormalisedBrightness(h, &radiometric);
+    return EstimateFrom(h, y, radiometric);
+}
+
+HessianEllipse EllipseFromHessian(const Matrix3& hessian, const Frame& frame, double maxRadius) {
+    HessianEllipse out;
+    out.u = frame.u;
+    out.v = frame.v;
+    const double h00 = hessian.Form(frame.u, frame.u);
+    const double h01 = hessian.Form(frame.u, frame.v);
+    const double h10 = hessian.Form(frame.v, frame.u);
+    const double h11 = hessian.Form(frame.v, frame.v);
+    double lambda[2] = {0, 0};
+    const int roots = MonicRoots(-(h00 + h11), h00 * h11 - h01 * h10, lambda);
+    if (roots == 1)
+        lambda[1] = lambda[0];
+    lambda[0] = std::fabs(lambda[0]);
+    lambda[1] = std::fabs(lambda[1]);
+    constexpr double kTiny2 = kFtiny * kFtiny;
+    if (roots == 0 || lambda[0] <= kTiny2 || lambda[1] <= kTiny2) {
+        out.radius[0] = out.radius[1] = maxRadius;
+        return out;
+    }
+    const double large = std::max(lambda[0], lambda[1]);
+    const double small = std::min(lambda[0], lambda[1]);
+    out.radius[0] = std::sqrt(std::sqrt(4.0 / large));
+    out.radius[1] = std::sqrt(std::sqrt(4.0 / small));
+    if (std::fabs(h01) <= kFtiny)
+        return out;
+    // (1, s) solves (h − λ)x = 0 for λ = `small` (exactly so only when that
+    // eigenvalue is positive): the direction of least curvature becomes v.
+    const double s = (small - h00) / h01;
+    const double m = std::sqrt(1.0 / (1.0 + s * s));
+    out.v = frame.u * m + frame.v * (s * m);
+    out.u = frame.u * (s * m) - frame.v * m;
+    return out;
+}
+
+std::optional<std::array<double, 2>> HessianRotationalGradient(const HessianHemisphere& h,
+                                                               const Vec3& u, const Vec3& v) {
+    if (!h.complete || h.ns < kMinHessianDivisions)
+        return std::nullopt;
+    bool radiometric = false;
+    const std::vector<double> y = NormalisedBrightness(h, &radiometric);
+    if (!radiometric)
+        return std::nullopt;
+    return RotationalGradientOf(h, y, u, v);
+}
+
+void LimitHessianRadii(double radius[2], const double* posGradient, double weight,
+                       const AmbientLimits& limits) {
+    if (posGradient != nullptr) {
+        // Where E changes fast the ellipse must not reach further than 1/|g|.
+        const double g0 = std::fabs(posGradient[0]);
+        const double g1 = std::fabs(posGradient[1]);
+        if (radius[0] * g0 > 1.0)
+            radius[0] = 1.0 / g0;
+        if (radius[1] * g1 > 1.0)
+            radius[1] = 1.0 / g1;
+        if (radius[0] > radius[1])
+            radius[0] = radius[1];
+    }
+    if (radius[0] < limits.minRadius) {
+        radius[0] = limits.minRadius;
+        if (radius[1] < limits.minRadius)
+            radius[1] = limits.minRadius;
+    }
+    // Weak records (deeper bounces) may be used further away.
+    const double scale = 1.0 / std::sqrt(weight);
+    radius[0] *= scale;
+    radius[1] *= scale;
+    if (radius[1] > 2.0 * radius[0])
+        radius[1] = 2.0 * radius[0];
+    if (radius[1] > limits.maxRadius) {
+        radius[1] = limits.maxRadius;
+        if (radius[0] > limits.maxRadius)
+            radius[0] = limits.maxRadius;
+    }
+}
+
+void CapHessianGradient(double posGradient[2], const double radius[2]) {
+    const double change = posGradient[0] * posGradient[0] * radius[0] * radius[0] +
+                          posGradient[1] * posGradient[1] * radius[1] * radius[1];
+    if (change > 1.0) {
+        const double scale = 1.0 / std::sqrt(change);
+        posGradient[0] *= scale;
+        posGradient[1] *= scale;
+    }
+}
+
+std::optional<AmbientRecord> MakeHessianRecord(const HessianHemisphere& h, int level, double weight,
+                                               double accuracy, const AmbientLimits& limits) {
+    if (!h.complete || h.ns < kMinHessianDivisions || !(weight > 0) || !IsFinite(h.value))
+        return std::nullopt;
+    bool radiometric = false;
+    const std::vector<double> y = NormalisedBrightness(h, &radiometric);
+    const HessianEstimate est = EstimateFrom(h, y, radiometric);
+    if (!IsFinite(est.hessian) || !IsFinite(est.gradient))
+        return std::nullopt;
+    const HessianEllipse ellipse = EllipseFromHessian(est.hessian, h.frame, limits.maxRadius);
+
+    AmbientRecord rec;
+    rec.position = h.point;
+    rec.normal = h.frame.n;
+    rec.uAxis = ellipse.u;
+    rec.value = h.value;
+    rec.radius[0] = ellipse.radius[0];
+    rec.radius[1] = ellipse.radius[1];
+    rec.level = level;
+    rec.weight = weight;
+    if (est.radiometric) {
+        rec.posGradient[0] = Dot(est.gradient, ellipse.u);
+        rec.posGradient[1] = Dot(est.gradient, ellipse.v);
+        const std::array<double, 2> g = RotationalGradientOf(h, y, ellipse.u, ellipse.v);
+        rec.dirGradient[0] = g[0];
+        rec.dirGradient[1] = g[1];
+    }
+    LimitHessianRadii(rec.radius, est.radiometric ? rec.posGradient : nullptr, weight, limits);
+    if (est.radiometric) {
+        // The corral sees the ellipse the lookup accepts, a·radius.
+        rec.corral = CorralBits(h, ellipse.u, rec.radius[0] * accuracy, rec.radius[1] * accuracy);
+        CapHessianGradient(rec.posGradient, rec.radius);
+    }
+    if (!(rec.radius[0] > 0) || !std::isfinite(rec.radius[1]) ||
+        !std::isfinite(rec.dirGradient[0]) || !std::isfinite(rec.dirGradient[1]))
+        return std::nullopt;
+    return rec;
+}
+
+}  // namespace rt
