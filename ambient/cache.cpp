@@ -29,8 +29,9 @@ bool IsUsable(const AmbientRecord& r) {
 }  // namespace
 
 AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy,
-                           AmbientLimits limits)
+                           AmbientLimits limits, RecordWeighting weighting)
     : accuracy_(accuracy),
+      weighting_(weighting),
       limits_(limits),
       indexOrigin_(cubeOrigin),
       indexSize_(cubeSize > 0 ? cubeSize : 1.0) {}
@@ -63,6 +64,12 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     *recordsUsed = 0;
     Rgb sum;
     double weightSum = 0;
+    const bool hat = weighting_ == RecordWeighting::Hat;
+    // Radiance 5's normal limit (radians), widened for weak rays.
+    double maxAngle = 10.0 * kPi / 180.0 + a;
+    if (hat && q.rayWeight < 0.6) {
+        maxAngle = (maxAngle - 0.5 * kPi) * std::pow(q.rayWeight, 0.13) + 0.5 * kPi;
+    }
     std::shared_lock lock(mutex_);
     // A record answers only queries of its own bounce depth: its value holds
     // exactly the bounces left at that depth. (Radiance also lets deeper
@@ -78,18 +85,31 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         const double cosNormals = Dot(r.normal, q.normal);
         if (cosNormals <= 0) return;
         const Vec3 delta = q.point - r.position;
-        if (0.5 * Dot(delta, r.normal + q.normal) < -behindTolerance) return;
-        // Split-sphere error: distance in units of the record's radius (its
-        // ellipse for anisotropic records) plus the normal divergence.
         const Vec3 u = r.uAxis;
         const Vec3 v = r.VAxis();
         const double du = Dot(delta, u) / r.radius[0];
         const double dv = Dot(delta, v) / r.radius[1];
         const double dn = Dot(delta, r.normal) / r.radius[0];
         const double e1 = du * du + dv * dv + dn * dn;
-        const double e2 = std::max(0.0, 1.0 - cosNormals);
-        const double eps = std::sqrt(e1) + std::sqrt(e2);
-        if (eps >= a) return;  // weight 1/ε must exceed 1/a
+        double w = 0;
+        if (hat) {
+            // Radiance 5: chord between the normals, behind test on the
+            // record's own normal, elliptical distance.
+            const double chord2 = 2.0 - 2.0 * cosNormals;
+            if (chord2 >= maxAngle * maxAngle) return;
+            if (Dot(delta, r.normal) < -behindTolerance) return;
+            if (e1 >= a * a) return;
+            w = (1.0 - std::sqrt(chord2) / maxAngle) * (1.0 - std::sqrt(e1) / a);
+            if (!(w > 0)) return;
+        } else {
+            if (0.5 * Dot(delta, r.normal + q.normal) < -behindTolerance) return;
+            // Split-sphere error: distance in units of the record's radius (its
+            // ellipse for anisotropic records) plus the normal divergence.
+            const double e2 = std::max(0.0, 1.0 - cosNormals);
+            const double eps = std::sqrt(e1) + std::sqrt(e2);
+            if (eps >= a) return;  // weight 1/ε must exceed 1/a
+            w = eps > 1e-3 ? 1.0 / eps : 1e3;
+        }
         // First-order extrapolation (Ward & Heckbert 1992).
         double f = 1.0 + Dot(delta, u * r.posGradient[0] + v * r.posGradient[1]) +
                    Dot(Cross(r.normal, q.shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
@@ -97,7 +117,6 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         // Last, because it may trace a ray.
         if (hidden(r)) return;
         f = std::min(f, kMaxExtrapolation);
-        const double w = eps > 1e-3 ? 1.0 / eps : 1e3;
         sum += r.value * (w * f);
         weightSum += w;
         ++*recordsUsed;

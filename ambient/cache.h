@@ -35,11 +35,23 @@ struct AmbientQuery {
     double rayWeight = 1;  // weight of the ray being shaded
 };
 
+/// How records are accepted and weighed at a query.
+enum class RecordWeighting {
+    /// Ward's split-sphere error ε (distance in radii plus normal divergence),
+    /// weight 1/ε, accepted while ε < a (Radiance ≤ 4.2, §4.12).
+    SplitSphere,
+    /// Radiance 5's (§4.3): the normals within 10° + a radians, the elliptical
+    /// distance ε below a, weight (1 − δ/θmax)(1 − ε/a), a hat that falls to
+    /// zero at both limits.
+    Hat,
+};
+
 class AmbientCache {
 public:
     /// `cubeOrigin/cubeSize` bound the scene (records outside still work);
     /// `accuracy` is -aa (> 0).
-    AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy, AmbientLimits limits);
+    AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy, AmbientLimits limits,
+                 RecordWeighting weighting = RecordWeighting::SplitSphere);
 
     /// Stores a record (computed here or read from a file). Records with a
     /// non-positive or non-finite radius, or non-finite values, are ignored
@@ -79,6 +91,7 @@ public:
 private:
     mutable std::shared_mutex mutex_;
     double accuracy_;
+    RecordWeighting weighting_;
     AmbientLimits limits_;
     Vec3 indexOrigin_;
     double indexSize_;

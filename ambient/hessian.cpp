@@ -120,46 +120,64 @@ bool SampleCell(HessianHemisphere& h, int i, int j, const Vec3& dir, int n, doub
 
 namespace detail {
 
-std::vector<double> ContrastEstimates(const HessianHemisphere& h) {
+std::vector<double> NeighbourContrast(const HessianHemisphere& h) {
     const int ns = h.ns;
     std::vector<double> e(h.cells.size(), 0.0);
-    auto pair = [&](std::size_t a, std::size_t b) {
-        const double la = Bright(h.cells[a].radiance);
-        const double lb = Bright(h.cells[b].radiance);
-        // Two black cells: Radiance's 0/0 is a NaN that silently disables
-        // super-sampling for the whole hemisphere; no difference is what it means.
-        if (!(la + lb > 0))
-            return;
-        const double d = la - lb;
-        const double term = d * d / (la + lb);
-        e[a] += term;
-        e[b] += term;
-    };
     for (int i = 0; i < ns; ++i) {
         for (int j = 0; j < ns; ++j) {
-            const std::size_t k = Index(ns, i, j);
-            if (i > 0)
-                pair(k, Index(ns, i - 1, j));
-            if (j > 0)
-                pair(k, Index(ns, i, j - 1));
-            if (i > 0 && j > 0)
-                pair(k, Index(ns, i - 1, j - 1));
+            double b[4];
+            int n = 0;
+            if (i > 0) b[n++] = Bright(h.At(i - 1, j).radiance);
+            if (i + 1 < ns) b[n++] = Bright(h.At(i + 1, j).radiance);
+            if (j > 0) b[n++] = Bright(h.At(i, j - 1).radiance);
+            if (j + 1 < ns) b[n++] = Bright(h.At(i, j + 1).radiance);
+            double mean = 0;
+            for (int k = 0; k < n; ++k) mean += b[k];
+            mean /= n;
+            double var = 0;
+            for (int k = 0; k < n; ++k) var += (b[k] - mean) * (b[k] - mean);
+            e[Index(ns, i, j)] = var / n;
         }
     }
-    // Radiance scales border cells by 8/5 and corners by 8/3, as if every cell
-    // had a term for each of its 8 neighbours; the anti-diagonal pairs are
-    // never compared, so an interior cell has 6, a border cell 4 and the
-    // corners 3 or 2. Kept: it decides where the samples go.
-    const int last = ns - 1;
-    for (const std::size_t k :
-         {Index(ns, 0, 0), Index(ns, 0, last), Index(ns, last, 0), Index(ns, last, last)})
-        e[k] *= 8.0 / 3.0;
-    for (int t = 1; t < last; ++t) {
-        for (const std::size_t k :
-             {Index(ns, t, 0), Index(ns, t, last), Index(ns, 0, t), Index(ns, last, t)})
-            e[k] *= 8.0 / 5.0;
-    }
     return e;
+}
+
+std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& rng) {
+    const std::vector<double> e = NeighbourContrast(h);
+    std::vector<int> counts(e.size(), 0);
+    // The cells form a checkerboard whose every cell has its neighbours in
+    // the other colour. Each colour gets a fixed share of the extra samples
+    // (by its number of cells), spread over its cells in proportion to their
+    // priorities, which come from the other colour's samples only. So how
+    // many extra samples a cell gets depends on no sample of its own colour,
+    // its own included. (Normalising all priorities together would let a
+    // cell's own sample raise its neighbours' priorities and so lower its own
+    // share: 1 % high under a small bright patch.)
+    const int cells = h.ns * h.ns;
+    const int evenCells = (cells + 1) / 2;  // the colour of cell (0, 0)
+    const int evenCount = static_cast<int>(
+        std::floor(static_cast<double>(count) * evenCells / cells + rng.Uniform()));
+    for (int colour = 0; colour < 2; ++colour) {
+        const int budget = colour == 0 ? evenCount : count - evenCount;
+        double total = 0;
+        for (int i = 0; i < h.ns; ++i) {
+            for (int j = (i + colour) % 2; j < h.ns; j += 2) total += e[Index(h.ns, i, j)];
+        }
+        // Systematic sampling (one random offset over the cumulative shares):
+        // each cell its share in expectation, exactly `budget` in all.
+        const double offset = rng.Uniform();
+        if (!(total > 0) || budget <= 0) continue;
+        double cumulative = 0;
+        for (int i = 0; i < h.ns; ++i) {
+            for (int j = (i + colour) % 2; j < h.ns; j += 2) {
+                const double before = std::floor(cumulative + offset);
+                cumulative += budget * e[Index(h.ns, i, j)] / total;
+                counts[Index(h.ns, i, j)] =
+                    static_cast<int>(std::floor(cumulative + offset) - before);
+            }
+        }
+    }
+    return counts;
 }
 
 }  // namespace detail
@@ -171,28 +189,16 @@ namespace {
 /// rounded at random; never more than `count` in total.
 void SuperSample(HessianHemisphere& h, int count, double farDistance, Rng& rng,
                  AmbientTraceRef trace) {
-    const std::vector<double> e = detail::ContrastEstimates(h);
-    double remaining = 0;
-    for (const double x : e)
-        remaining += x;
+    const std::vector<int> counts = detail::AllotSuperSamples(h, count, rng);
     for (int i = 0; i < h.ns; ++i) {
         for (int j = 0; j < h.ns; ++j) {
-            // Radiance's FTINY, in units of radiance.
-            if (remaining <= kFtiny)
-                return;
-            const double share = e[Index(h.ns, i, j)];
-            const int wanted = static_cast<int>(share / remaining * count + rng.Uniform());
-            for (int n = 1; n <= wanted; ++n) {
+            for (int n = 1; n <= counts[Index(h.ns, i, j)]; ++n) {
                 const double xi0 = rng.Uniform();
                 const double xi1 = rng.Uniform();
                 const Vec3 dir = CellDirection(h.frame, h.ns, i, j, xi0, xi1);
-                if (!SampleCell(h, i, j, dir, n, farDistance, trace))
-                    break;
+                if (!SampleCell(h, i, j, dir, n, farDistance, trace)) break;
                 ++h.superSamples;
-                if (--count == 0)
-                    return;
             }
-            remaining -= share;
         }
     }
 }
@@ -341,8 +347,12 @@ HessianHemisphere SampleHessianHemisphere(const Vec3& point, const Vec3& normal,
     h.complete = succeeded == cells;
     h.anySample = succeeded > 0;
 
+    // -as·weight, but at most one extra sample per cell on average: the
+    // priorities are fixed before any extra sample is taken, so beyond that
+    // the extra samples only pile up in the same few cells (as the classic
+    // sampler, README Differences).
     const double extraWanted = std::max(0.0, options.superSamples * options.weight);
-    const int extra = static_cast<int>(std::min(extraWanted, 1e9) + 0.5);
+    const int extra = static_cast<int>(std::min(extraWanted, static_cast<double>(cells)) + 0.5);
     if (h.complete && cells >= kMinSuperSampleCells && extra >= kMinSuperSamples)
         SuperSample(h, extra, farDistance, rng, trace);
 

@@ -89,14 +89,13 @@ int HessianDivisions(const HemisphereOptions& options);
 /// Samples the hemisphere around unit `normal` at `point` (radiance-notes.md
 /// §4.5–4.6): one sample per cell in a stratified, cosine-weighted layout,
 /// first samples re-drawn when they would fall within π/(4ns) of a neighbour's,
-/// then (int)(superSamples·weight + 0.5) extra samples, if more than 8, sent
-/// to cells in proportion to their relative brightness differences with their
-/// neighbours (only for complete hemispheres of more than 49 cells; Radiance's
-/// own bias toward high-contrast cells is kept). As in Radiance, extra samples
-/// change a cell's mean and nearest distance but not its hit point, which
-/// pulls the translational gradient low where they land. Unlike Radiance, two
-/// black neighbours count as no difference rather than a 0/0 that stops
-/// super-sampling for the whole hemisphere. `farDistance` (see
+/// then (int)(min(superSamples·weight, ns²) + 0.5) extra samples, if more
+/// than 8, allotted before any is taken in proportion to the contrast among
+/// each cell's neighbours (detail::NeighbourContrast; only for complete
+/// hemispheres of more than 49 cells). Unlike Radiance's, this allocation
+/// leaves every cell's mean unbiased. As in Radiance, extra samples change a
+/// cell's mean and nearest distance but not its hit point, which pulls the
+/// translational gradient low where they land. `farDistance` (see
 /// HessianFarDistance) bounds the stored hit points. Never returns NaN or
 /// negative values; a failed sample counts as zero radiance and makes the
 /// result incomplete.
@@ -187,12 +186,21 @@ struct FormFactorEdge {
 };
 FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n);
 
-/// Radiance's getambdiffs(), the super-sampling priorities: for each cell
-/// (row-major), the sum of (ℓ − ℓ')²/(ℓ + ℓ') over its comparisons with the
-/// cells above, left and upper-left of it and below, right and lower-right of
-/// it (ℓ = bright(radiance), two black cells counting 0), border cells times
-/// 8/5 and corners times 8/3. Units: radiance.
-std::vector<double> ContrastEstimates(const HessianHemisphere& hemisphere);
+/// The super-sampling priorities: for each cell (row-major), the variance of
+/// the first-pass brightness of its neighbours above, below, left and right
+/// (those that exist), leaving the cell's own sample out. Units: radiance².
+/// Radiance's getambdiffs() compares each cell with its neighbours, so a cell
+/// whose first sample caught a small bright patch is refined (its mean pulled
+/// down to the truth) while one that missed it stays dark: the hemisphere
+/// comes out biased low (README, Differences). Left out, a cell's own value
+/// does not decide how many extra samples it gets, and its mean stays unbiased.
+std::vector<double> NeighbourContrast(const HessianHemisphere& hemisphere);
+
+/// How many of `count` extra samples each cell (row-major) gets: each colour
+/// of the grid's checkerboard a share by its number of cells, spread by
+/// NeighbourContrast with systematic sampling (random offsets from `rng`).
+/// A cell's count depends on no cell of its own colour, itself included.
+std::vector<int> AllotSuperSamples(const HessianHemisphere& hemisphere, int count, Rng& rng);
 
 }  // namespace detail
 

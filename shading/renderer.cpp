@@ -29,7 +29,10 @@ std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
     }
     return std::make_shared<AmbientCache>(
         scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
-        AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()));
+        AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()),
+        // Each record method with its own interpolation: Radiance 5's hat
+        // weights go with its Hessian records.
+        ambient.hessianRecords ? RecordWeighting::Hat : RecordWeighting::SplitSphere);
 }
 
 std::shared_ptr<const Renderer::Shared> Renderer::Share(const Scene& scene, const RayCore& core,

@@ -56,6 +56,43 @@ TEST(AmbientCache, WeightsAreInverseSplitSphereError) {
     EXPECT_NEAR(v->g, (40 * 0.5 + 10 * 0.3) / 50, 1e-12);
 }
 
+/// Radiance 5's weights (RecordWeighting::Hat): (1 − δ/θmax)(1 − ε/a), with
+/// ε the elliptical distance alone and δ the chord between the normals.
+TEST(AmbientCache, HatWeightsAsRadiance5) {
+    AmbientCache cache(Vec3(-10, -10, -10), 20, 0.2, AmbientLimits{0.01, 5}, RecordWeighting::Hat);
+    cache.Add(FloorRecord({0, 0, 0}, 0.5, 0.8));
+    cache.Add(FloorRecord({0.1, 0, 0}, 0.3, 0.8));
+    // Query at x = 0.02: ε = 0.025 and 0.1, weights 1 − 0.025/0.2 and 1 − 0.1/0.2.
+    auto v = cache.Interpolate(FloorQuery({0.02, 0, 0}));
+    ASSERT_TRUE(v);
+    const double w0 = 1 - 0.025 / 0.2, w1 = 1 - 0.1 / 0.2;
+    EXPECT_NEAR(v->g, (w0 * 0.5 + w1 * 0.3) / (w0 + w1), 1e-12);
+    // Normals 15° apart: accepted under θmax = 10° + 0.2 rad = 21.5°, with the
+    // hat's angular factor; at 25° rejected. (Split-sphere weights would
+    // reject 15° at this accuracy: sqrt(1 − cos 15°) = 0.18, plus distance.)
+    for (const double degrees : {15.0, 25.0}) {
+        AmbientCache c(Vec3(-10, -10, -10), 20, 0.2, AmbientLimits{0.01, 5}, RecordWeighting::Hat);
+        AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0.8);
+        const double t = degrees * kPi / 180;
+        r.normal = Vec3(std::sin(t), 0, std::cos(t));
+        r.uAxis = Vec3(std::cos(t), 0, -std::sin(t));
+        c.Add(r);
+        EXPECT_EQ(c.Interpolate(FloorQuery({0, 0, 0})).has_value(), degrees < 20) << degrees;
+    }
+    // Weak rays widen the angle: (θmax − π/2)·w^0.13 + π/2 is 52° at w = 0.01
+    // and 27° at w = 0.5.
+    {
+        AmbientCache c(Vec3(-10, -10, -10), 20, 0.2, AmbientLimits{0.01, 5}, RecordWeighting::Hat);
+        AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0.8);  // weight 1: eligible for both
+        const double t = 40 * kPi / 180;
+        r.normal = Vec3(std::sin(t), 0, std::cos(t));
+        r.uAxis = Vec3(std::cos(t), 0, -std::sin(t));
+        c.Add(r);
+        EXPECT_TRUE(c.Interpolate(FloorQuery({0, 0, 0}, 0, 0.01)));
+        EXPECT_FALSE(c.Interpolate(FloorQuery({0, 0, 0}, 0, 0.5)));
+    }
+}
+
 TEST(AmbientCache, NormalDivergenceCountsInTheError) {
     AmbientCache cache = MakeCache(0.1);
     cache.Add(FloorRecord({0, 0, 0}, 0.5, 1));

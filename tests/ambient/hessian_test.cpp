@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <random>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -1039,48 +1040,68 @@ TEST(HessianSuperSampling, GoesToHighContrastCellsAndNeverExceedsTheRequest) {
     }
 }
 
-// Radiance's priorities for one bright cell among black ones: (1 − 0)²/(1 + 0)
-// = 1 per comparison, in the bright cell and in each cell it is compared with.
-// Comparisons run along rows, columns and one diagonal (upper-left to
-// lower-right), so an interior cell has 6 of them; the border factors 8/5 and
-// 8/3 are Radiance's, who counted 8.
-TEST(HessianSuperSampling, ContrastEstimatesFollowRadiance) {
+// The priorities leave each cell's own sample out: one bright cell among black
+// ones has priority 0 itself, and each of its four neighbours the variance of
+// its own neighbours' brightness, of which that bright cell is one.
+TEST(HessianSuperSampling, PrioritiesLeaveTheCellsOwnSampleOut) {
     HessianHemisphere h;
     h.ns = 5;
     h.complete = true;
     h.cells.assign(25, HessianCell{});
-    auto estimate = [&](int i, int j) {
-        for (HessianCell& c : h.cells)
-            c.radiance = Rgb();
-        h.cells[static_cast<std::size_t>(i * 5 + j)].radiance = Rgb::Grey(1);
-        return detail::ContrastEstimates(h);
-    };
-    auto at = [](const std::vector<double>& e, int i, int j) {
-        return e[static_cast<std::size_t>(i * 5 + j)];
-    };
-    std::vector<double> e = estimate(2, 2);  // interior
-    EXPECT_DOUBLE_EQ(at(e, 2, 2), 6.0);
-    for (const auto& [i, j] : {std::pair{1, 2}, {3, 2}, {2, 1}, {2, 3}, {1, 1}, {3, 3}})
-        EXPECT_DOUBLE_EQ(at(e, i, j), 1.0) << i << " " << j;
-    EXPECT_DOUBLE_EQ(at(e, 1, 3), 0.0);  // the anti-diagonal is never compared
-    EXPECT_DOUBLE_EQ(at(e, 3, 1), 0.0);
-    e = estimate(0, 2);  // top border: 4 comparisons, times 8/5
-    EXPECT_DOUBLE_EQ(at(e, 0, 2), 4 * 8.0 / 5);
-    EXPECT_DOUBLE_EQ(at(e, 0, 1), 8.0 / 5);  // a border neighbour
-    EXPECT_DOUBLE_EQ(at(e, 1, 2), 1.0);      // an interior one
-    e = estimate(0, 0);                      // corners: 3 or 2 comparisons, times 8/3
-    EXPECT_DOUBLE_EQ(at(e, 0, 0), 3 * 8.0 / 3);
-    e = estimate(0, 4);
-    EXPECT_DOUBLE_EQ(at(e, 0, 4), 2 * 8.0 / 3);
-    // Two black neighbours: no difference (Radiance: 0/0).
-    for (HessianCell& c : h.cells)
-        c.radiance = Rgb();
-    for (const double x : detail::ContrastEstimates(h))
-        EXPECT_EQ(x, 0.0);
+    h.cells[2 * 5 + 2].radiance = Rgb::Grey(1);
+    const std::vector<double> e = detail::NeighbourContrast(h);
+    auto at = [&](int i, int j) { return e[static_cast<std::size_t>(i * 5 + j)]; };
+    EXPECT_EQ(at(2, 2), 0.0);
+    // Four neighbours, one of them 1: mean 1/4, variance (3·(1/4)² + (3/4)²)/4.
+    const double variance = (3 * 0.0625 + 0.5625) / 4;
+    for (const auto& [i, j] : {std::pair{1, 2}, {3, 2}, {2, 1}, {2, 3}})
+        EXPECT_DOUBLE_EQ(at(i, j), variance) << i << " " << j;
+    EXPECT_EQ(at(1, 1), 0.0);  // diagonal: not a neighbour
+    EXPECT_EQ(at(0, 0), 0.0);
+    // A bright border cell: its three neighbours' variance.
+    for (HessianCell& c : h.cells) c.radiance = Rgb();
+    h.cells[0 * 5 + 2].radiance = Rgb::Grey(1);
+    const std::vector<double> border = detail::NeighbourContrast(h);
+    EXPECT_EQ(border[2], 0.0);
+    EXPECT_DOUBLE_EQ(border[1], (2 * 1.0 / 9 + 4.0 / 9) / 3);  // neighbours 0, 1, 0 (of 3)
 }
 
-// A request larger than the contrast can place is still never exceeded, with
-// contrast everywhere (a checkerboard of directions).
+// How many extra samples a cell gets does not depend on its own sample (nor
+// on any cell of its colour), so its mean stays unbiased: changing one cell's
+// value changes only the other colour's counts, and the total stays exact.
+TEST(HessianSuperSampling, ACellsShareDoesNotDependOnItsOwnSample) {
+    HessianHemisphere h;
+    h.ns = 9;
+    h.complete = true;
+    h.cells.assign(81, HessianCell{});
+    std::mt19937_64 gen(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (HessianCell& c : h.cells) c.radiance = Rgb::Grey(u(gen) < 0.2 ? 10.0 : 0.1);
+    for (int cell : {40, 41, 0, 9}) {
+        Rng a(7), b(7);
+        const std::vector<int> before = detail::AllotSuperSamples(h, 60, a);
+        HessianHemisphere changed = h;
+        changed.cells[static_cast<std::size_t>(cell)].radiance = Rgb::Grey(50);
+        const std::vector<int> after = detail::AllotSuperSamples(changed, 60, b);
+        int total = 0, moved = 0;
+        for (int k = 0; k < 81; ++k) {
+            total += after[static_cast<std::size_t>(k)];
+            const bool sameColour = (k / 9 + k % 9) % 2 == (cell / 9 + cell % 9) % 2;
+            if (sameColour) {
+                EXPECT_EQ(after[static_cast<std::size_t>(k)], before[static_cast<std::size_t>(k)])
+                    << "cell " << k << " after changing " << cell;
+            } else {
+                moved += after[static_cast<std::size_t>(k)] != before[static_cast<std::size_t>(k)];
+            }
+        }
+        EXPECT_EQ(total, 60);
+        EXPECT_GT(moved, 0) << cell;  // the neighbours' shares did change
+    }
+}
+
+// A request is never exceeded, and is cut to one extra sample per cell on
+// average (the priorities are fixed before sampling), with contrast
+// everywhere (a checkerboard of directions).
 TEST(HessianSuperSampling, NeverMoreThanRequested) {
     const AmbientTraceFn checker = [](const Vec3& d) {
         const int k = static_cast<int>(std::floor(d.x * 9) + std::floor(d.y * 9));
@@ -1090,15 +1111,15 @@ TEST(HessianSuperSampling, NeverMoreThanRequested) {
         Rng rng(static_cast<std::uint64_t>(request));
         const HessianHemisphere h =
             SampleHessianHemisphere({}, kUp, Options(256, request), kFar, rng, checker);
-        EXPECT_LE(h.superSamples, request);
-        EXPECT_GE(h.superSamples, request * 9 / 10);
+        EXPECT_LE(h.superSamples, std::min(request, 256));
+        EXPECT_GE(h.superSamples, std::min(request, 256) * 9 / 10);
         EXPECT_EQ(h.raysTraced, 256 + h.superSamples);
     }
 }
 
 // Where two neighbouring cells are both black, Radiance's estimate divides
-// 0 by 0 and the NaN stops all super-sampling; here it counts as no
-// difference, and the edge between light and dark still gets the samples.
+// 0 by 0 and the NaN stops all super-sampling; here the edge between light
+// and dark still gets the samples.
 TEST(HessianSuperSampling, BlackNeighboursDoNotDisableIt) {
     Rng rng(1);
     const HessianHemisphere h = SampleHessianHemisphere({}, kUp, Options(1024, 512), kFar, rng,
@@ -1138,7 +1159,7 @@ TEST(HessianSuperSampling, UpdatesMeanAndNearestDistanceButNotTheHitPoint) {
     Rng rng(12);
     const HessianHemisphere h =
         SampleHessianHemisphere({}, kUp, Options(256, 400), kFar, rng, trace);
-    ASSERT_GT(h.superSamples, 300);
+    ASSERT_GT(h.superSamples, 230);  // at most one per cell on average: 256
     const int ns = h.ns;
     std::vector<std::vector<Seen>> byCell(static_cast<std::size_t>(ns * ns));
     for (const Seen& s : seen) {
