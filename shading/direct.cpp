@@ -122,9 +122,9 @@ void Integrator::Direct(TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> co
         DirectUntimed(ray, coef);
         return;
     }
-    // Reading the clock twice around each of a run's millions of calls cost
-    // 11 % of a cornell -ab 2 run (3.47-3.55 s instead of 3.11-3.15 s), so
-    // every kDirectTimingStride-th call is timed and stands for the others.
+    // Reading the clock twice around each of a run's millions of calls would
+    // slow the run measurably (README, "Options", -t), so every
+    // kDirectTimingStride-th call is timed and stands for the others.
     timing_ = false;  // calls nested in this one are part of it
     if (++directCalls_ % kDirectTimingStride == 0) {
         const auto start = std::chrono::steady_clock::now();
@@ -154,9 +154,9 @@ void Integrator::DirectUntimed(TracedRay& ray, FunctionRef<Rgb(const Vec3&, doub
 
     // Radiance's deterministic partition centres (-dj 0), also for rays of
     // the indirect calculation: jittering them there converges to the exact
-    // integral, which differs from Radiance's own converged answers by up to
-    // 6 % in the cornell box's penumbrae (0.92 % RMS against its reference
-    // floor instead of 0.61 %); lazyrad's contract is Radiance's answer.
+    // integral, which differs from Radiance's own converged answers in
+    // penumbrae (README, "Differences"); lazyrad's contract is Radiance's
+    // answer.
     CollectSourceSamples(sources_, ray.rop, ray.sourceWeight, shading_.direct, rng_,
                          scratch.samples, scratch.partitions);
     if (scratch.samples.empty()) return;

@@ -66,11 +66,10 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         // already set by the weight, and -ab bounds the depth. Radiance
         // rolls for them below -lw and fails the division of every loser:
         // below -lw no record can be cached, every query computes its own
-        // hemisphere, and the work grows as (samples/2)^depth (-ab 12 -lr -60
-        // in a closed box never ended). Counting losers as zeros instead
-        // kept it linear, but one coarse record per wall then carried that
-        // noise multiplicatively down 40 levels (a rho 0.999 box 62 % dark
-        // for most seeds at -ar 4 -ab 50).
+        // hemisphere, and the work grows as (samples/2)^depth. Counting
+        // losers as zeros instead kept it linear, but one coarse record per
+        // wall then carried that noise multiplicatively down the levels, and
+        // deep bounces came out dark (README, "Differences").
         TracedRay child;
         StartChild(child, ray, kAmbientRay, nullptr);
         child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
@@ -80,8 +79,8 @@ Hemisphere Integrator::SampleAmbient(const TracedRay& ray, const Rgb& coefficien
         // Light sources seen from the sample's hit are subdivided (-ds) for
         // the path's real importance: the cache's nominal 0.5 would halve the
         // subdivision distance and turn lamps partly hidden by an edge into
-        // all-or-nothing points (the cornell corridor behind the tall block
-        // came out 4 % dark against Radiance's converged reference).
+        // all-or-nothing points, which darkens penumbrae seen from the
+        // hemisphere (README, "Differences").
         child.sourceWeight = ray.sourceWeight * std::fmin(1.0, Intens(coefficient));
         child.org = point;
         child.dir = dir;

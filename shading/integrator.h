@@ -20,7 +20,7 @@
 
 #include "ambient/cache.h"
 #include "ambient/hemisphere.h"
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/conventions.h"
 #include "core/diagnostics.h"
 #include "core/function_ref.h"
@@ -30,7 +30,7 @@
 #include "raycore/raycore.h"
 #include "scene/scene.h"
 #include "shading/light_sources.h"
-#include "shading/options.h"
+#include "shading/shading_options.h"
 #include "shading/ray_result.h"
 #include "shading/render_stats.h"
 
@@ -280,8 +280,8 @@ private:
     };
     std::vector<DirectScratch> directScratch_;
     /// (int)(n^dc + 0.5) for small n: how many contributions -dc says to
-    /// test beyond the current one (std::pow per shading point was 1 % of
-    /// the run time).
+    /// test beyond the current one, tabled so that no shading point calls
+    /// std::pow (docs/measured-choices.md).
     std::vector<int> shadowCheckCounts_;
     /// No surface can pass light (no trans, glass, dielectric, interface or
     /// illum, and back faces are visible): shadow rays need only any-hit tests.
@@ -292,7 +292,7 @@ private:
     std::uint64_t directCalls_ = 0;
     static constexpr int kDirectTimingStride = 16;
     /// Seconds between two back-to-back clock reads, which every timed
-    /// interval also holds (~20 ns, a tenth of an average Direct() call).
+    /// interval also holds and which is taken off it.
     double clockReadSeconds_ = 0;
     std::function<void(const RayResult&)> trace_;
     bool traceShadows_ = false;

@@ -4,6 +4,7 @@
 // ambient cache did and how many rays were traced.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,25 @@ struct RenderStats {
     double secondsLookup = 0;    // cache lookups (interpolation)
     double secondsDirect = 0;    // direct lighting, shadow rays included; an estimate
                                  // from a sample of the calls (Integrator::Direct)
+
+    /// Adds another thread's counts, level by level.
+    RenderStats& operator+=(const RenderStats& other) {
+        raysTraced += other.raysTraced;
+        shadowRays += other.shadowRays;
+        leakRays += other.leakRays;
+        ambientLookups += other.ambientLookups;
+        ambientHits += other.ambientHits;
+        hemispheres += other.hemispheres;
+        if (recordsPerLevel.size() < other.recordsPerLevel.size())
+            recordsPerLevel.resize(other.recordsPerLevel.size());
+        for (std::size_t i = 0; i < other.recordsPerLevel.size(); ++i)
+            recordsPerLevel[i] += other.recordsPerLevel[i];
+        recordsLoaded += other.recordsLoaded;
+        secondsSampling += other.secondsSampling;
+        secondsLookup += other.secondsLookup;
+        secondsDirect += other.secondsDirect;
+        return *this;
+    }
 };
 
 }  // namespace rt
