@@ -73,9 +73,9 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     std::shared_lock lock(mutex_);
     // A record answers only queries of its own bounce depth: its value holds
     // exactly the bounces left at that depth. (Radiance also lets deeper
-    // queries use shallower records, which mixes bounce counts and makes its
-    // white furnace 3 % dark at -ab 3.) Hence one index per depth: a lookup
-    // never visits the other depths' records.
+    // queries use shallower records, which mixes bounce counts and darkens
+    // its white furnace.) Hence one index per depth: a lookup never visits
+    // the other depths' records.
     if (q.level < 0 || static_cast<size_t>(q.level) >= indexByLevel_.size()) return std::nullopt;
     indexByLevel_[static_cast<size_t>(q.level)].ForEachContaining(q.point, [&](std::uint32_t id) {
         const AmbientRecord& r = records_[id];

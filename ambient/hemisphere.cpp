@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/check.h"
 #include "core/conventions.h"
 
@@ -94,8 +94,9 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
 namespace {
 
 /// cos and sin of x for 0 <= x <= π/4, by their Taylor series to x^16
-/// (error below 2e-16): a fraction of the cost of std::sin and std::cos,
-/// which took 4 % of a cornell -ab 2 run at one call per hemisphere ray.
+/// (error below 2e-16): a fraction of the cost of std::sin and std::cos, which
+/// would otherwise be called once per hemisphere ray
+/// (docs/measured-choices.md).
 void SinCosSmall(double x, double& c, double& s) {
     const double x2 = x * x;
     s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
@@ -190,7 +191,7 @@ std::optional<Traced> TraceOne(AmbientTraceRef trace, const Vec3& dir) {
 /// then a division whose first sample happened to catch a small bright patch
 /// gets refined (and its mean pulled down to the truth) while one whose
 /// first sample missed the patch stays dark, so the hemisphere comes out
-/// biased low — measured 7 % low at dim points of the cornell box. With the
+/// biased low, most at dim points (README, "Differences"). With the
 /// division's own sample left out, how many extra samples it gets does not
 /// depend on its own value, and its mean stays unbiased.
 void NeighbourPriorities(DivisionGrid& divs) {
@@ -222,9 +223,8 @@ void AddSuperSample(Division& d, const Traced& sample) {
     // The gradient weights want the nearest surface seen in the division (as
     // Radiance 5 keeps): a division the edge of a near emitter cuts must keep
     // the emitter's distance even if its first sample missed. The first-sample
-    // distance alone (still the header's radius statistic) gave single -ad 1024
-    // -as 512 hemispheres up to 33% gradient error at a sharp edge, and
-    // Radiance ≤ 4.2's mean 1/d a 13-17% low gradient there (half-plane test).
+    // distance alone (still the header's radius statistic), or Radiance ≤ 4.2's
+    // mean 1/d, under-weights such an edge (docs/measured-choices.md).
     d.nearestInverseDistance = std::max(d.nearestInverseDistance, sample.inverseDistance);
     const Rgb& radiance = sample.radiance;
     const double diff = Bright(d.mean) - Bright(radiance);
@@ -237,7 +237,7 @@ void AddSuperSample(Division& d, const Traced& sample) {
 /// weighted by the nearer of the two divisions' nearest hits (Radiance's
 /// posgradient). Row-boundary terms point along the column centre, as in the
 /// paper; Radiance ≤ 4.2 used the column's start φ_j, which rotates them by
-/// π/np and gave a spurious 0.8% sideways component in the half-plane test.
+/// π/np and adds a spurious sideways component (docs/measured-choices.md).
 Vec3 TranslationalGradient(const DivisionGrid& divs, const Frame& frame) {
     const int rows = divs.Rows();
     const int columns = divs.Columns();
@@ -280,8 +280,8 @@ Vec3 RotationalGradient(const DivisionGrid& divs, const Frame& frame) {
     // x = sin²θ uniform in [t/nt, (t+1)/nt]: nt·[F(x)] with F(x) = asin√x −
     // √(x(1−x)), the antiderivative of √(x/(1−x)). Radiance ≤ 4.2 took tanθ at
     // the row's centre, which misses the integrable 1/√(1−x) rise toward the
-    // horizon and made the gradient ~5% low for a sky bright down to the
-    // horizon at nt = 72 (hemisphere_test: GradientsMatchHalfPlaneEmitter).
+    // horizon and so underestimates the gradient of a sky bright down to the
+    // horizon (hemisphere_test: GradientsMatchHalfPlaneEmitter).
     std::vector<double> meanTan(static_cast<std::size_t>(rows));
     auto antiderivative = [](double x) {
         return std::asin(std::sqrt(x)) - std::sqrt(x * (1.0 - x));
@@ -443,9 +443,9 @@ std::optional<AmbientRecord> MakeClassicRecord(const Vec3& position, const Vec3&
         return std::nullopt;
     // The gradient is trusted only up to |g|·R = 1 for the radius actually
     // stored (Radiance 5 caps it the same way, after the weight): Radiance ≤
-    // 4.2 capped it before dividing by sqrt(weight), so a level-1 record could
-    // extrapolate 40 % further than its gradient is good for, and the cornell
-    // floor next to the blocks came out up to 10 % bright at -aa .2.
+    // 4.2 capped it before dividing by sqrt(weight), so a deeper record could
+    // extrapolate further than its gradient is good for (README,
+    // "Differences"; docs/measured-choices.md).
     if (LengthSquared(g) * radius * radius > 1.0)
         g = g * (1.0 / (radius * std::sqrt(LengthSquared(g))));
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ambient/leak.h"
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/check.h"
 #include "core/conventions.h"
 

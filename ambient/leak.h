@@ -5,13 +5,14 @@
 // wall, for instance on the ground outside a room, a centimetre below the
 // floor inside, with a radius of metres because it sees the open sky. The
 // classic cache (§4.12) has no such test; without it, second-bounce floor
-// queries in the daylit room took those outdoor records and came out 10-26 %
-// bright at -aa .2. The test ray goes from the query point toward the record's
-// position lifted along the record's normal, far enough that the ray leaves
-// the query surface 20° above it and so does not graze the surface it starts
-// on. As in Radiance 5 it is only sent where the record's corral bits saw an
-// occluder nearby in the query's direction (a test for every record used
-// cost more rays than the daylit room's whole calculation).
+// queries in the daylit room take those outdoor records and come out bright
+// (README, "Differences"). The test ray goes from the query point toward the
+// record's position lifted along the record's normal, far enough that the ray
+// leaves the query surface 20° above it and so does not graze the surface it
+// starts on. As in Radiance 5 it is only sent where the record's corral bits
+// saw an occluder nearby in the query's direction: a test for every record
+// used would cost more rays than the rest of the calculation
+// (docs/measured-choices.md).
 #pragma once
 
 #include <cstdint>

@@ -44,6 +44,7 @@ private:
 };
 
 /// Mixes two 64-bit values into a well-distributed seed (splitmix64 finaliser).
+/// MixSeed(z, 0) is splitmix64's output for state z: a hash of one value.
 inline std::uint64_t MixSeed(std::uint64_t a, std::uint64_t b) {
     std::uint64_t z = a + 0x9e3779b97f4a7c15ULL * (b + 1);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;

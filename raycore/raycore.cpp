@@ -92,8 +92,8 @@ float RoundUp(double x) {
     float f = static_cast<float>(x);
     if (static_cast<double>(f) < x) {
         // The next float up. Not std::nextafter: glibc's saves and restores
-        // the floating-point environment, which cost ~3 % of all run time
-        // here (every query calls this). f is finite and below x.
+        // the floating-point environment, too slow here, as every query calls
+        // this (docs/measured-choices.md). f is finite and below x.
         if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
         auto bits = std::bit_cast<std::uint32_t>(f);
         bits += f > 0.0f ? 1 : -1;
@@ -442,7 +442,8 @@ struct RayCore::Impl {
                        RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded);
     void AttachGeometry(Layer& layer, RTCGeometry geometry, unsigned id);
     // Both run once per query: inlined into Intersect and Occluded, which
-    // share their work on the origin (they were ~6 % of a cornell run as calls).
+    // share their work on the origin (as calls they cost measurable time,
+    // docs/measured-choices.md).
     [[gnu::always_inline]] inline Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax,
                                                   RTCRay& ray) const;
 
@@ -729,9 +730,9 @@ void RayCore::Impl::BuildLayer(Layer& layer, Geometry& geometry, const std::vect
     layer.rtc = rtcNewScene(device);
     Check("rtcNewScene");
     // ROBUST: watertight triangle tests, so rays through shared edges and
-    // vertices never slip between triangles. It costs ~9 % of a cornell
-    // -ab 2 run, but without it 3408 of 300 000 rays from inside a closed
-    // genbox room aimed at its edges and corners escaped (none with it).
+    // vertices never slip between triangles. It costs traversal time, but
+    // without it rays from inside a closed genbox room aimed at its edges and
+    // corners escape (README, "Measured"; raycore_test's CheckClosedBox).
     rtcSetSceneFlags(layer.rtc, RTC_SCENE_FLAG_ROBUST);
     // The scene never changes after loading and is traced millions of times:
     // spend more on the build for faster traversal.

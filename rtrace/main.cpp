@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
-// rtrace: parse, build, run, map errors to exit codes (all in rtrace/run.cpp).
+// rtrace: parse, build, run (rtrace/run.cpp), with errors mapped to exit codes
+// by the program shell (program/shell.h).
 #include <iostream>
 #include <string>
 #include <vector>

@@ -7,6 +7,7 @@
 
 #include "core/conventions.h"
 #include "core/error.h"
+#include "core/quote.h"
 
 namespace rt {
 namespace {
@@ -65,7 +66,7 @@ OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn
     if (options.outputFormat == 'c' && (vs.size() != 1 || std::strchr("vrx", vs[0]) == nullptr))
         ThrowUserError("color format only with -ov, -or, -ox");
 
-    const bool irradiance = options.irradianceAtHit || options.immediateIrradiance;
+    const bool irradiance = options.shading.irradiance != IrradianceMode::Off;
     const AmbientOptions& amb = options.ambient;
     const bool accuracyWarning =
         amb.bounces > 0 && (amb.accuracy > kFtiny || amb.superSamples > 0);
@@ -218,29 +219,6 @@ void RecordWriter::WriteTraceRecord(std::string_view letters, const RayResult& r
     if (buffer_.size() >= kDrainBytes) Drain();
 }
 
-std::string QuoteWord(std::string_view word) {
-    bool hasSpace = false;
-    char quote = 0;
-    for (char c : word) {
-        if (std::isspace(static_cast<unsigned char>(c))) hasSpace = true;
-        else if (c == '"') quote = '\'';
-        else if (c == '\'') quote = '"';
-    }
-    if (!hasSpace && !quote) return std::string(word);
-    if (!quote) quote = '"';
-    return quote + std::string(word) + quote;
-}
-
-std::string FormatArgs(std::span<const std::string> words) {
-    std::string s;
-    for (std::size_t i = 0; i < words.size(); ++i) {
-        if (i) s += ' ';
-        s += QuoteWord(words[i]);
-    }
-    s += '\n';
-    return s;
-}
-
 std::string FormatHeader(std::span<const std::string> commandLine, const OutputSpec& spec,
                          char outputFormat, std::time_t now,
                          std::span<const std::string> sceneHeader) {
@@ -249,7 +227,8 @@ std::string FormatHeader(std::span<const std::string> commandLine, const OutputS
         h += line;
         h += '\n';
     }
-    h += FormatArgs(commandLine);
+    h += QuoteWords(commandLine);
+    h += '\n';
     h += "SOFTWARE= ";
     h += kVersionString;
     h += '\n';
@@ -266,12 +245,7 @@ std::string FormatHeader(std::span<const std::string> commandLine, const OutputS
         h += first ? "BigEndian=0\n" : "BigEndian=1\n";
     }
     h += "FORMAT=";
-    switch (outputFormat) {
-        case 'f': h += "float"; break;
-        case 'd': h += "double"; break;
-        case 'c': h += "32-bit_rle_rgbe"; break;
-        default: h += "ascii"; break;
-    }
+    h += FormatName(outputFormat);
     h += "\n\n";
     return h;
 }

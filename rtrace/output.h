@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "core/diagnostics.h"
-#include "rtrace/options.h"
+#include "rtrace/command_line.h"
 #include "shading/ray_result.h"
 
 namespace rt {
@@ -77,11 +77,6 @@ private:
     std::ostream& out_;
     std::string buffer_;
 };
-
-/// Radiance's fputword(): quotes a word containing blanks or quotes.
-std::string QuoteWord(std::string_view word);
-/// Radiance's printargs(): quoted words joined by single spaces, then "\n".
-std::string FormatArgs(std::span<const std::string> words);
 
 /// The information header rtrace writes with -h+ (§1.8): "#?RADIANCE",
 /// the octree's own header lines (`sceneHeader`, copied as Radiance copies

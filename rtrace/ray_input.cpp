@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "rtrace/options.h"
+#include "program/arguments.h"
 
 namespace rt {
 

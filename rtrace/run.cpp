@@ -1,40 +1,20 @@
 // SPDX-License-Identifier: MIT
 #include "rtrace/run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "program/arguments.h"
+#include "program/shell.h"
 #include "rtrace/output.h"
 #include "rtrace/ray_input.h"
 
 namespace rt {
 namespace {
-
-std::string ProgramName(std::span<const std::string> args) {
-    if (args.empty()) return "rtrace";
-    const std::string& a = args[0];
-    std::size_t slash = a.find_last_of('/');
-    return slash == std::string::npos ? a : a.substr(slash + 1);
-}
-
-/// Radiance's error() layout: "<prog>: <kind> - <text>". The bad-ray message
-/// is lazyrad's own and reads "<prog>: bad ray at ..." (see ray_input.h).
-void ReportError(std::ostream& msg, const std::string& prog, const Error& e) {
-    if (dynamic_cast<const BadRayError*>(&e)) {
-        msg << prog << ": " << e.what() << '\n';
-    } else {
-        const char* kind = e.kind() == Error::Kind::User     ? "fatal - "
-                           : e.kind() == Error::Kind::System ? "system - "
-                                                             : "internal - ";
-        msg << prog << ": " << kind << e.what() << '\n';
-    }
-    msg.flush();
-}
 
 /// Warnings about options that are accepted but do nothing yet, where a user
 /// would otherwise believe they had an effect.
@@ -69,183 +49,154 @@ bool TraceListAccepts(const RtraceOptions& o, const RayResult& r) {
     return listed == o.traceListIsInclude;
 }
 
+/// Reads the rays and writes their records: everything between the -e file
+/// and the end of the run. Throws rt::Error (BadRayError for bad input).
+void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
+           const RunEnvironment& env, ProgramShell& shell) {
+    const RtraceOptions& opt = cl.options;
+    const WarningSink& warn = shell.Warn();
+    WarnUnimplemented(opt, warn);
+    const std::time_t now = env.clock();
+
+    const OutputSpec spec = ParseOutputSpec(opt, warn);
+    if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");
+    std::unique_ptr<RayEvaluator> evaluator = env.makeEvaluator(cl.sceneFiles, opt, warn);
+
+    if (opt.header) {
+        std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);
+        writer.WriteText(FormatHeader(commandLine, spec, opt.outputFormat, now,
+                                      evaluator->SceneHeaderLines()));
+    }
+    if (spec.trace) {
+        evaluator->SetTraceCallback(
+            [&](const RayResult& r) {
+                if (TraceListAccepts(opt, r)) writer.WriteTraceRecord(spec.traceFields, r);
+            },
+            spec.traceShadows);
+    }
+
+    const int x = opt.xResolution, y = opt.yResolution;
+    // rtrace.c: -x with -y counts pixels, -y alone counts records; 0 = all input.
+    std::uint64_t remaining = x > 1 ? static_cast<std::uint64_t>(x) * static_cast<std::uint64_t>(y)
+                                    : static_cast<std::uint64_t>(std::max(y, 0));
+    const bool counting = remaining > 0;
+    // Periodic flush every x records unless this is a picture (x and y given).
+    const long flushInterval = (y > 0 && x > 1) ? 0 : x;
+    long nextFlush = flushInterval;
+    if (x > 0) {
+        if (y > 0) writer.WriteText(FormatResolution(x, y));
+        writer.Flush();
+    }
+
+    // -t: progress every reportSeconds, checked cheaply every 64 records.
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    auto nextReport = start + std::chrono::seconds(std::max(opt.reportSeconds, 0));
+    auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+    RayReader reader(in, opt.inputFormat);
+    Vec3 lastOrigin, lastDirection;
+    const bool immediate = opt.shading.irradiance == IrradianceMode::Immediate;
+    // Rays are evaluated in batches so that -n threads can share them;
+    // one process (or trace output, which Radiance never parallelises)
+    // evaluates them one at a time, as they arrive.
+    const int threads = spec.trace ? 1 : std::max(1, opt.processes);
+    const std::size_t batchLimit = threads > 1 ? 1024 * static_cast<std::size_t>(threads) : 1;
+    std::vector<RayQuery> pending;
+    std::vector<RayResult> results;
+    auto evaluatePending = [&] {
+        if (pending.empty()) return;
+        results.resize(pending.size());
+        evaluator->TraceBatch(pending, results);
+        for (const RayResult& r : results) {
+            lastOrigin = r.origin;
+            lastDirection = r.direction;
+            writer.WriteRecord(spec.fields, r);
+            if (--nextFlush == 0) {
+                if (!writer.Flush()) ThrowSystemError("write error");
+                nextFlush = flushInterval;
+            }
+        }
+        pending.clear();
+    };
+    std::uint64_t index = 0;
+    while (auto ray = reader.Next()) {
+        // hypot: no overflow for components beyond 1e154, unlike sqrt(dot).
+        const Vec3& d = ray->direction;
+        const double length = std::hypot(d.x, d.y, d.z);
+        if (length == 0) {
+            // A flush request: everything before it is answered first,
+            // then its own record, then the output is flushed and the -x
+            // countdown starts again.
+            evaluatePending();
+            writer.WriteRecord(spec.fields, BogusRecord(lastOrigin, lastDirection));
+            if (!writer.Flush()) ThrowSystemError("write error");
+            nextFlush = flushInterval;
+        } else {
+            const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
+            pending.push_back({ray->origin, ray->direction / length, rmax, index});
+            // A batch ends where a -x flush falls, so output is as prompt.
+            if (pending.size() >= batchLimit ||
+                (nextFlush > 0 && pending.size() >= static_cast<std::size_t>(nextFlush))) {
+                evaluatePending();
+            }
+        }
+        ++index;
+        if (opt.reportSeconds > 0 && index % 64 == 0 && Clock::now() >= nextReport) {
+            char line[128];
+            std::snprintf(line, sizeof line, "%llu rays after %.1f s",
+                          static_cast<unsigned long long>(index), seconds());
+            shell.Say(line);
+            nextReport = Clock::now() + std::chrono::seconds(opt.reportSeconds);
+        }
+        if (counting && --remaining == 0) break;
+    }
+    evaluatePending();
+    evaluator->Finish();
+    if (!writer.Flush()) ThrowSystemError("write error");
+    if (counting && remaining > 0) warn("unexpected EOF on input");
+    if (opt.reportSeconds > 0) {
+        std::string summary = evaluator->Summary();
+        char tail[96];
+        std::snprintf(tail, sizeof tail, "%s%llu input rays in %.2f s", summary.empty() ? "" : ", ",
+                      static_cast<unsigned long long>(index), seconds());
+        shell.Say(summary + tail);
+    }
+}
+
 }  // namespace
 
 int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
         std::ostream& err, const RunEnvironment& env) {
-    std::string prog = ProgramName(args);
-    std::ostream* msg = &err;
-    std::ofstream errorFile;
-    bool warningsOn = true;
-    WarningSink warn = [&](const std::string& text) {
-        if (warningsOn) {
-            *msg << prog << ": warning - " << text << '\n';
-            msg->flush();
+    ProgramShell shell(args.empty() ? "rtrace" : ProgramName(args[0]), err);
+    const WarningSink& warn = shell.Warn();
+    return shell.Run([&] {
+        CommandLine cl = ParseCommandLine(args, warn);
+        const RtraceOptions& opt = cl.options;
+        shell.SetName(cl.args[0]);
+        shell.SetWarnings(opt.warnings);
+        if (const std::optional<std::string> text = InfoText(cl)) {
+            out << *text;
+            out.flush();
+            return 0;
         }
-    };
+        if (!shell.OpenErrorFile(opt.errorFile, env.pid, cl.args)) return 2;
 
-    CommandLine cl;
-    std::vector<std::string> parseWarnings;
-    try {
-        cl = ParseCommandLine(args, [&](const std::string& w) { parseWarnings.push_back(w); });
-    } catch (const Error& e) {
-        for (const auto& w : parseWarnings) warn(w);
-        ReportError(err, prog, e);
-        return e.ExitCode();
-    }
-    RtraceOptions& opt = cl.options;
-    prog = cl.args[0];
-    warningsOn = opt.warnings;
-    for (const auto& w : parseWarnings) warn(w);
-
-    if (cl.action == CommandLine::Action::PrintVersion) {
-        out << kVersionString << '\n';
-        out.flush();
-        return 0;
-    }
-    if (cl.action == CommandLine::Action::PrintDefaults) {
-        out << FormatDefaults(opt);
-        out.flush();
-        return 0;
-    }
-
-    if (!opt.errorFile.empty()) {
-        errorFile.open(opt.errorFile, std::ios::app);
-        if (!errorFile) return 2;  // Radiance quits 2 without a message here
-        char pid[32];
-        std::snprintf(pid, sizeof pid, "%5d", env.pid);
-        errorFile << "**************\n*** PID " << pid << ": " << FormatArgs(cl.args) << '\n';
-        errorFile.flush();
-        msg = &errorFile;
-    }
-
-    RecordWriter writer(opt.outputFormat, out);
-    std::uint64_t index = 0;
-    try {
-        WarnUnimplemented(opt, warn);
-        const std::time_t now = env.clock();
-        // Repeatable runs: the random streams come from -seed and each ray's
-        // position in the input, never the clock (Radiance seeds -u+ runs
-        // with time(0), so two of its runs differ).
-        opt.shading.seed = static_cast<unsigned long long>(static_cast<unsigned>(opt.seed));
-
-        const OutputSpec spec = ParseOutputSpec(opt, warn);
-        if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");
-        std::unique_ptr<RayEvaluator> evaluator = env.makeEvaluator(cl.sceneFiles, opt, warn);
-
-        if (opt.header) {
-            std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);
-            writer.WriteText(FormatHeader(commandLine, spec, opt.outputFormat, now,
-                                          evaluator->SceneHeaderLines()));
-        }
-        if (spec.trace) {
-            evaluator->SetTraceCallback(
-                [&](const RayResult& r) {
-                    if (TraceListAccepts(opt, r)) writer.WriteTraceRecord(spec.traceFields, r);
-                },
-                spec.traceShadows);
-        }
-
-        const int x = opt.xResolution, y = opt.yResolution;
-        // rtrace.c: -x with -y counts pixels, -y alone counts records; 0 = all input.
-        std::uint64_t remaining = x > 1 ? static_cast<std::uint64_t>(x) * static_cast<std::uint64_t>(y)
-                                        : static_cast<std::uint64_t>(std::max(y, 0));
-        const bool counting = remaining > 0;
-        // Periodic flush every x records unless this is a picture (x and y given).
-        const long flushInterval = (y > 0 && x > 1) ? 0 : x;
-        long nextFlush = flushInterval;
-        if (x > 0) {
-            if (y > 0) writer.WriteText(FormatResolution(x, y));
+        RecordWriter writer(opt.outputFormat, out);
+        try {
+            Trace(cl, in, writer, env, shell);
+        } catch (const BadRayError& e) {
+            // Results computed before the problem are delivered first. The
+            // message is lazyrad's own: "<prog>: bad ray at ..." (ray_input.h).
             writer.Flush();
+            shell.Say(e.what());
+            return e.ExitCode();
+        } catch (...) {
+            writer.Flush();
+            throw;
         }
-
-        // -t: progress every reportSeconds, checked cheaply every 64 records.
-        using Clock = std::chrono::steady_clock;
-        const auto start = Clock::now();
-        auto nextReport = start + std::chrono::seconds(std::max(opt.reportSeconds, 0));
-        auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-
-        RayReader reader(in, opt.inputFormat);
-        Vec3 lastOrigin, lastDirection;
-        const bool immediate = opt.immediateIrradiance;
-        // Rays are evaluated in batches so that -n threads can share them;
-        // one process (or trace output, which Radiance never parallelises)
-        // evaluates them one at a time, as they arrive.
-        const int threads = spec.trace ? 1 : std::max(1, opt.processes);
-        const std::size_t batchLimit = threads > 1 ? 1024 * static_cast<std::size_t>(threads) : 1;
-        std::vector<RayQuery> pending;
-        std::vector<RayResult> results;
-        auto evaluatePending = [&] {
-            if (pending.empty()) return;
-            results.resize(pending.size());
-            evaluator->TraceBatch(pending, results);
-            for (const RayResult& r : results) {
-                lastOrigin = r.origin;
-                lastDirection = r.direction;
-                writer.WriteRecord(spec.fields, r);
-                if (--nextFlush == 0) {
-                    if (!writer.Flush()) ThrowSystemError("write error");
-                    nextFlush = flushInterval;
-                }
-            }
-            pending.clear();
-        };
-        while (auto ray = reader.Next()) {
-            // hypot: no overflow for components beyond 1e154, unlike sqrt(dot).
-            const Vec3& d = ray->direction;
-            const double length = std::hypot(d.x, d.y, d.z);
-            if (length == 0) {
-                // A flush request: everything before it is answered first,
-                // then its own record, then the output is flushed and the -x
-                // countdown starts again.
-                evaluatePending();
-                writer.WriteRecord(spec.fields, BogusRecord(lastOrigin, lastDirection));
-                if (!writer.Flush()) ThrowSystemError("write error");
-                nextFlush = flushInterval;
-            } else {
-                const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
-                pending.push_back({ray->origin, ray->direction / length, rmax, index});
-                // A batch ends where a -x flush falls, so output is as prompt.
-                if (pending.size() >= batchLimit ||
-                    (nextFlush > 0 && pending.size() >= static_cast<std::size_t>(nextFlush))) {
-                    evaluatePending();
-                }
-            }
-            ++index;
-            if (opt.reportSeconds > 0 && index % 64 == 0 && Clock::now() >= nextReport) {
-                char line[128];
-                std::snprintf(line, sizeof line, "%llu rays after %.1f s",
-                              static_cast<unsigned long long>(index), seconds());
-                *msg << prog << ": " << line << '\n';
-                msg->flush();
-                nextReport = Clock::now() + std::chrono::seconds(opt.reportSeconds);
-            }
-            if (counting && --remaining == 0) break;
-        }
-        evaluatePending();
-        evaluator->Finish();
-        if (!writer.Flush()) ThrowSystemError("write error");
-        if (counting && remaining > 0) warn("unexpected EOF on input");
-        if (opt.reportSeconds > 0) {
-            std::string summary = evaluator->Summary();
-            char tail[96];
-            std::snprintf(tail, sizeof tail, "%s%llu input rays in %.2f s", summary.empty() ? "" : ", ",
-                          static_cast<unsigned long long>(index), seconds());
-            *msg << prog << ": " << summary << tail << '\n';
-            msg->flush();
-        }
-    } catch (const Error& e) {
-        // Results computed before the problem are delivered first.
-        writer.Flush();
-        ReportError(*msg, prog, e);
-        return e.ExitCode();
-    } catch (const std::exception& e) {
-        writer.Flush();
-        *msg << prog << ": internal - " << e.what() << '\n';
-        msg->flush();
-        return 3;
-    }
-    return 0;
+        return 0;
+    });
 }
 
 }  // namespace rt

@@ -147,24 +147,7 @@ public:
 
     std::string Summary() const override {
         RenderStats s;
-        for (const auto& r : renderers_) {
-            const RenderStats& t = r->Stats();
-            s.raysTraced += t.raysTraced;
-            s.shadowRays += t.shadowRays;
-            s.leakRays += t.leakRays;
-            s.ambientLookups += t.ambientLookups;
-            s.ambientHits += t.ambientHits;
-            s.hemispheres += t.hemispheres;
-            s.secondsSampling += t.secondsSampling;
-            s.secondsLookup += t.secondsLookup;
-            s.secondsDirect += t.secondsDirect;
-            if (s.recordsPerLevel.size() < t.recordsPerLevel.size()) {
-                s.recordsPerLevel.resize(t.recordsPerLevel.size());
-            }
-            for (size_t i = 0; i < t.recordsPerLevel.size(); ++i) {
-                s.recordsPerLevel[i] += t.recordsPerLevel[i];
-            }
-        }
+        for (const auto& r : renderers_) s += r->Stats();
         std::string out = "records per level";
         if (s.recordsPerLevel.empty()) out += " 0";
         for (size_t i = 0; i < s.recordsPerLevel.size(); ++i) {

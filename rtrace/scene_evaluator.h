@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "rtrace/run.h"
+#include "rtrace/ray_evaluator.h"
 
 namespace rt {
 
@@ -23,7 +23,7 @@ std::unique_ptr<RayEvaluator> MakeSceneEvaluator(const std::vector<std::string>&
 /// Directory of the running executable (from /proc/self/exe), empty if unknown.
 std::string ExecutableDirectory();
 
-/// The environment of this process for Run()/RunRender(): real scenes
+/// The environment of this process for Run()/RunRvimage(): real scenes
 /// (bundled tools found next to the executable), the clock, the pid.
 RunEnvironment ProcessEnvironment();
 

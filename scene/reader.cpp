@@ -255,14 +255,6 @@ std::string PrintableWord(std::string_view word) {
     return out;
 }
 
-std::string QuoteSceneWord(std::string_view word) {
-    bool needsQuotes = word.empty() || word[0] == '"' || word[0] == '\'';
-    for (const char c : word) needsQuotes = needsQuotes || IsSpace(static_cast<unsigned char>(c));
-    if (!needsQuotes) return std::string(word);
-    const char quote = word.find('"') != std::string_view::npos ? '\'' : '"';
-    return quote + std::string(word) + quote;
-}
-
 std::string ShellQuote(std::string_view text) {
     std::string out = "'";
     for (const char c : text) {

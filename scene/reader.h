@@ -93,9 +93,6 @@ std::optional<double> ParseRealWord(std::string_view word);
 /// A word safe to quote in a message: control and non-ASCII bytes as \xNN, long
 /// words cut to 60 characters with "...".
 std::string PrintableWord(std::string_view word);
-/// Writes a word so SceneTextReader reads it back unchanged (quoted if it has
-/// white space or is empty; Radiance's fputword()).
-std::string QuoteSceneWord(std::string_view word);
 /// 'text' for /bin/sh, with embedded single quotes escaped.
 std::string ShellQuote(std::string_view text);
 

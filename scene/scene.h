@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -85,6 +86,19 @@ using MaterialParams =
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
 MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& args);
+
+/// Solid angle (sr) of a spotlight's cone of full angle `coneAngleDegrees`:
+/// 2π(1 − cos(angle/2)), Radiance's spotlight size.
+inline double SpotSolidAngle(double coneAngleDegrees) {
+    return 2.0 * kPi * (1.0 - std::cos(kPi / 180.0 / 2.0 * coneAngleDegrees));
+}
+
+/// Radiance's spotout(): true when light leaving a spotlight against `dir`
+/// (unit, the direction from the lit point or ray toward the light) falls
+/// outside the cone of `solidAngle` (sr) around `aim` (unit).
+inline bool OutsideSpot(double solidAngle, const Vec3& aim, const Vec3& dir) {
+    return solidAngle < 2.0 * kPi * (1.0 + Dot(aim, dir));
+}
 
 /// A material. Argument counts are validated at load time against
 /// radiance-notes.md §2.6.

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "core/conventions.h"
+#include "core/quote.h"
 #include "scene/object_types.h"
 #include "scene/reader.h"
 
@@ -199,22 +200,22 @@ SceneObject TransformSceneObject(const SceneObject& object, const XformSettings&
 std::string FormatSceneObject(const SceneObject& object) {
     // Appends only: GCC 12 reports a false -Wrestrict for "literal" + temporary.
     std::string text = "\n";
-    text += QuoteSceneWord(object.modifier);
+    text += QuoteWord(object.modifier);
     text += ' ';
     text += object.type;
     text += ' ';
-    text += QuoteSceneWord(object.name);
+    text += QuoteWord(object.name);
     text += '\n';
     if (object.type == "alias") {
         text += '\t';
-        text += QuoteSceneWord(object.sargs.empty() ? "" : object.sargs[0]);
+        text += QuoteWord(object.sargs.empty() ? "" : object.sargs[0]);
         text += '\n';
         return text;
     }
     text += std::to_string(object.sargs.size());
     for (const std::string& s : object.sargs) {
         text += ' ';
-        text += QuoteSceneWord(s);
+        text += QuoteWord(s);
     }
     text += "\n0\n";
     text += std::to_string(object.rargs.size());

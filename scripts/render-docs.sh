@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates, in one command, the pictures in docs/images/ (see docs/images.md).
 #   scripts/render-docs.sh [build-dir]      (default: build/, made by scripts/build.sh release)
-# The golden images of tests/render/golden_image_test.cpp are not made here: they
+# The golden images of tests/rvimage/golden_image_test.cpp are not made here: they
 # are real Radiance's pictures, made by tests/data/golden/make_refs.sh, so that
 # lazyrad is never compared with its own output.
 set -euo pipefail

@@ -108,8 +108,8 @@ void DirectLight::Add(ThreadState& ts, TracedRay& ray,
         return;
     }
     // Reading the clock twice around each of a run's millions of calls would
-    // cost a noticeable share of the run, so every kDirectTimingStride-th
-    // call is timed and stands for the others.
+    // slow the run measurably (README, "Options", -t), so every
+    // kDirectTimingStride-th call is timed and stands for the others.
     ts.timing = false;  // calls nested in this one are part of it
     if (++ts.directCalls % ThreadState::kDirectTimingStride == 0) {
         const auto start = std::chrono::steady_clock::now();
@@ -141,9 +141,9 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
 
     // Radiance's deterministic partition centres (-dj 0), also for rays of
     // the indirect calculation: jittering them there converges to the exact
-    // integral, which differs from Radiance's own converged answers by up to
-    // several per cent in the cornell box's penumbrae (README, Differences);
-    // lazyrad's contract is Radiance's answer.
+    // integral, which differs from Radiance's own converged answers in
+    // penumbrae (README, "Differences"); lazyrad's contract is Radiance's
+    // answer.
     CollectSourceSamples(s_.sources, ray.rop, ray.sourceWeight, s_.shading.direct, ts.rng,
                          scratch.samples, scratch.partitions);
     if (scratch.samples.empty()) return;

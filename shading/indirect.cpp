@@ -67,8 +67,8 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
         // below -lw no record can be cached, every query computes its own
         // hemisphere, and the work grows as (samples/2)^depth. Counting
         // losers as zeros instead kept it linear, but one coarse record per
-        // wall then carried that noise multiplicatively down the levels of
-        // a bright closed box (README, Differences).
+        // wall then carried that noise multiplicatively down the levels, and
+        // deep bounces came out dark (README, "Differences").
         TracedRay child;
         tree_.StartChild(ts, child, ray, kAmbientRay, nullptr);
         child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
@@ -78,7 +78,8 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
         // Light sources seen from the sample's hit are subdivided (-ds) for
         // the path's real importance: the cache's nominal 0.5 would halve
         // the subdivision distance and turn lamps partly hidden by an edge
-        // into all-or-nothing points.
+        // into all-or-nothing points, which darkens penumbrae seen from the
+        // hemisphere (README, "Differences").
         child.sourceWeight = ray.sourceWeight * std::fmin(1.0, Intens(coefficient));
         child.org = ray.rop;
         child.dir = dir;

@@ -212,12 +212,6 @@ void PartitionSource(const LightSource& src, const Vec3& point, double rayWeight
     }
 }
 
-/// Radiance's spotout() for a local spotlight: true if the sample direction
-/// lies outside the spot. (Distant sources never carry a spot.)
-bool OutsideSpot(const LightSource& src, const Vec3& dir) {
-    return src.spotSolidAngle < 2.0 * kPi * (1.0 + Dot(src.spotAim, dir));
-}
-
 }  // namespace
 
 std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink& warn,
@@ -262,15 +256,12 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
                 warn(s.loc.ToString() + ": distant source is a spotlight for \"" + s.name + "\"");
             }
         } else if (m.type == MaterialType::Spotlight) {
-            double angle = params.coneAngleDegrees;
-            if (angle <= kFtiny) ThrowUserError(m.loc, "zero angle for spotlight \"" + m.name + "\"");
+            // The scene builder has refused zero cone angles and zero focus
+            // vectors (scene/build.cpp).
             src.spot = true;
-            src.spotSolidAngle = 2.0 * kPi * (1.0 - std::cos(kPi / 180.0 / 2.0 * angle));
+            src.spotSolidAngle = SpotSolidAngle(params.coneAngleDegrees);
             Vec3 aim = params.aim;
             src.spotFocal = Length(aim);
-            if (src.spotFocal == 0) {
-                ThrowUserError(m.loc, "zero focus vector for spotlight \"" + m.name + "\"");
-            }
             src.spotAim = aim / src.spotFocal;
             if (src.shape == LightSource::Shape::Flat) {
                 // checkspot(): the cone must reach in front of the surface.
@@ -364,7 +355,7 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
                 sample.distance = d;
                 if (src.proximity && d > src.proximityRadius) continue;
                 if (src.spot) {
-                    if (OutsideSpot(src, dir)) continue;
+                    if (OutsideSpot(src.spotSolidAngle, src.spotAim, dir)) continue;
                     double df = d + src.spotFocal;
                     sample.omega *= d * d / (df * df);
                 }

@@ -11,7 +11,7 @@
 #include "core/random.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
-#include "shading/options.h"
+#include "shading/shading_options.h"
 
 namespace rt {
 

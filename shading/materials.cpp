@@ -314,9 +314,7 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         return;  // -dv-
     }
     if (m.type == MaterialType::Spotlight) {
-        double siz = 2.0 * kPi * (1.0 - std::cos(kPi / 180.0 / 2.0 * p.coneAngleDegrees));
-        Vec3 aim = Normalize(p.aim);
-        if (siz < 2.0 * kPi * (1.0 + Dot(aim, ray.dir))) return;  // outside the spot
+        if (OutsideSpot(SpotSolidAngle(p.coneAngleDegrees), Normalize(p.aim), ray.dir)) return;
     }
     ray.rcol = p.color * ray.pcol;
 }

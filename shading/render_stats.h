@@ -4,6 +4,7 @@
 // rays were traced, and (IrradianceCounters) what the ambient cache did.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +22,25 @@ struct RenderStats : IrradianceCounters {
     // IrradianceCounters) has the direct lighting at its samples' hits taken off.
     double secondsDirect = 0;    // direct lighting, shadow rays included; an estimate
                                  // from a sample of the calls (DirectLight::Add)
+
+    /// Adds another thread's counts, level by level.
+    RenderStats& operator+=(const RenderStats& other) {
+        raysTraced += other.raysTraced;
+        shadowRays += other.shadowRays;
+        leakRays += other.leakRays;
+        ambientLookups += other.ambientLookups;
+        ambientHits += other.ambientHits;
+        hemispheres += other.hemispheres;
+        if (recordsPerLevel.size() < other.recordsPerLevel.size())
+            recordsPerLevel.resize(other.recordsPerLevel.size());
+        for (std::size_t i = 0; i < other.recordsPerLevel.size(); ++i)
+            recordsPerLevel[i] += other.recordsPerLevel[i];
+        recordsLoaded += other.recordsLoaded;
+        secondsSampling += other.secondsSampling;
+        secondsLookup += other.secondsLookup;
+        secondsDirect += other.secondsDirect;
+        return *this;
+    }
 };
 
 }  // namespace rt

@@ -14,11 +14,11 @@
 #include <memory>
 
 #include "ambient/cache.h"
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/diagnostics.h"
 #include "raycore/raycore.h"
 #include "scene/scene.h"
-#include "shading/options.h"
+#include "shading/shading_options.h"
 #include "shading/ray_result.h"
 #include "shading/render_stats.h"
 
@@ -74,7 +74,8 @@ public:
 
     /// Counters for the end-of-run report.
     const RenderStats& Stats() const;
-    /// Measure where time goes (RenderStats::seconds*); costs a few per cent.
+    /// Measure where time goes (RenderStats::seconds*); the clock reads cost
+    /// time of their own.
     void EnableTiming(bool on);
 
     /// Records this Renderer created since the last call, for the ambient file.

@@ -20,7 +20,7 @@
 
 #include "ambient/cache.h"
 #include "ambient/irradiance_cache.h"
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "cal/context.h"
 #include "core/diagnostics.h"
 #include "core/random.h"
@@ -29,7 +29,7 @@
 #include "raycore/raycore.h"
 #include "scene/scene.h"
 #include "shading/light_sources.h"
-#include "shading/options.h"
+#include "shading/shading_options.h"
 #include "shading/ray_result.h"
 #include "shading/render_stats.h"
 

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/conventions.h"
 #include "tests/ambient/hemisphere_test_scenes.h"
 
@@ -523,7 +523,7 @@ TEST(Hemisphere, DivisionsAreCappedForHugeDivisionCounts) {
     EXPECT_EQ(HemisphereDivisions(Options(kMaxAmbientDivisions, 0, 0.5)).rows, 817);
 }
 
-/// Issue 18: -as 1e7 took 10 s per ray. Extra samples stop at one per
+/// Issue 18: -as 1e7 took seconds per ray. Extra samples stop at one per
 /// division on average (nt·np), a deliberate difference from Radiance.
 TEST(Hemisphere, SuperSamplesAreCappedAtTheDivisionCount) {
     const auto trace = CapEnvironment(kTiltedNormal, 0.5, 1.0);

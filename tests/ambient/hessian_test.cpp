@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "ambient/leak.h"
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/conventions.h"
 #include "tests/ambient/hemisphere_test_scenes.h"
 

@@ -68,9 +68,9 @@ TEST(Skyplane, IrradianceAboveGroundIsPi) {
 
 /// Cheap settings on the cornell floor: a guard against regressions in the
 /// whole indirect path (real Radiance at these settings: 1.64 % RMS, 6.6 % max,
-/// one run). Over 11 seeds lazyrad measured 1.28-2.37 % RMS and 5.1-13.3 % max
-/// (2026-11-22): at 252 samples a single dim point is noisy, so the bounds sit
-/// at that tail with margin; the default-settings accuracy is in README.
+/// one run). Over 11 seeds lazyrad measured 1.28-2.37 % RMS and 5.1-13.3 % max:
+/// at 252 samples a single dim point is noisy, so the bounds sit at that tail
+/// with margin; the default-settings accuracy is in README.
 TEST(CornellFloor, TwoBouncesAtLowSettingsStayClose) {
     for (const char* method : kMethods) {
         auto rows = RunRows(std::string(method) + "-I -ab 2 -ad 256 -as 128 -aa .2 -ar 64 " +
@@ -123,7 +123,7 @@ TEST(Reproducibility, RunsRepeatAndIdenticalRaysAreIndependent) {
 /// room's wall, where records that see mostly open sky get radii of metres;
 /// the second and fourth look at the room's floor inside, 1 cm above the
 /// ground's plane and within those radii. Without the leak test the inside
-/// took the outside records (0.19 and 0.21 at -aa .5, 2026-11-22).
+/// takes the outside records and is lit.
 TEST(LeakTest, ClosedDarkRoomStaysBlack) {
     for (const char* method : kMethods) {
         for (const char* aa : {"-aa .2", "-aa .5"}) {
@@ -142,8 +142,8 @@ TEST(LeakTest, ClosedDarkRoomStaysBlack) {
 
 /// The same room with -I sensors 5 cm and more from its wall, outside on the
 /// ground first (their records see the wall 5 cm away) and then inside.
-/// Radiance 5's corral rule ignores occluders that near a record, and the
-/// inside read 1.7-1.85 (2026-11-22); lazyrad flags them.
+/// Radiance 5's corral rule ignores occluders that near a record, so the
+/// inside takes the outside's light; lazyrad flags them.
 TEST(LeakTest, SensorsNearTheWallInsideStayBlack) {
     for (const char* method : kMethods) {
         for (const char* ar : {"-ar 16", "-ar 64"}) {

@@ -90,10 +90,10 @@ TEST(OutputSpecParse, ErrorsAndWarnings) {
     EXPECT_EQ(SpecError("o", color), "color format only with -ov, -or, -ox");
     for (const char* ok : {"v", "r", "x"}) EXPECT_EQ(SpecError(ok, color), "(no error)");
     RtraceOptions irr;
-    irr.immediateIrradiance = true;
+    irr.shading.irradiance = IrradianceMode::Immediate;
     EXPECT_EQ(SpecError("pN", irr), "-I+ and -i+ options require some value output");
     irr = {};
-    irr.irradianceAtHit = true;
+    irr.shading.irradiance = IrradianceMode::AtHit;
     EXPECT_EQ(SpecError("m", irr), "-I+ and -i+ options require some value output");
 
     std::vector<std::string> w;
@@ -244,14 +244,6 @@ TEST(RtraceHeader, Layout) {
     EXPECT_NE(FormatHeader(cmd, SpecOf("v"), 'd', 0).find("BigEndian=0\nFORMAT=double\n"),
               std::string::npos);
     EXPECT_EQ(FormatResolution(32, 24), "-Y 24 +X 32\n");
-}
-
-TEST(RtraceHeader, QuotesLikeFputword) {
-    EXPECT_EQ(QuoteWord("plain"), "plain");
-    EXPECT_EQ(QuoteWord("a b"), "\"a b\"");
-    EXPECT_EQ(QuoteWord("say\"hi\""), "'say\"hi\"'");
-    EXPECT_EQ(QuoteWord("it's"), "\"it's\"");
-    EXPECT_EQ(FormatArgs(std::vector<std::string>{"rtrace", "-ab", "2"}), "rtrace -ab 2\n");
 }
 
 }  // namespace

@@ -180,11 +180,7 @@ TEST(SceneParser, EmptyInputWarns) {
     EXPECT_EQ(warnings, std::vector<std::string>{"(e.rad): empty file"});
 }
 
-TEST(SceneWords, QuoteRoundTrip) {
-    EXPECT_EQ(QuoteSceneWord("plain"), "plain");
-    EXPECT_EQ(QuoteSceneWord("two words"), "\"two words\"");
-    EXPECT_EQ(QuoteSceneWord("say \"hi\" now"), "'say \"hi\" now'");
-    EXPECT_EQ(QuoteSceneWord(""), "\"\"");
+TEST(SceneWords, ShellAndMessageQuoting) {
     EXPECT_EQ(ShellQuote("it's"), "'it'\\''s'");
     EXPECT_EQ(PrintableWord(std::string("a\0b", 3)), "a\\x00b");
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the Radiance pictures that tests/render/golden_image_test.cpp compares
+# Makes the Radiance pictures that tests/rvimage/golden_image_test.cpp compares
 # rvimage with, using real Radiance 5.4a. The test only reads the committed
 # .hdr files; this script is for a developer who has Radiance at hand.
 #

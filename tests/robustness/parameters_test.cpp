@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/stiff/stiff_run.h"
+#include "tests/robustness/robustness_run.h"
 #include "tests/testing/rtrace_rows.h"
 
 namespace {
@@ -39,7 +39,7 @@ std::string ThreePoints() {
                          "5.2840 5.2840 0.001 0 0 1\n");
 }
 
-/// Cheap settings (0.01 s); each case overrides some of them (a later
+/// Cheap settings; each case overrides some of them (a later
 /// option wins, as in Radiance).
 const std::string kBase = "-I -n 1 -seed 1 -ab 2 -ad 64 -as 32 -aa .2 -ar 16 ";
 
@@ -75,11 +75,9 @@ TEST_P(ParameterSweep, OutputIsFiniteAndNonNegative) {
     }
 }
 
-// Each case took 0.5 s or less (Release, 2026-11-22): -ab 8 0.5 s; -ab 1
-// -ad 100000 -as 50000 0.4 s; -ad 16 -as 1024 0.4 s; -ab 1 -ad 100000 0.2 s;
-// -ad 1 -as 512 0.15 s; -ab 4 0.12 s; the others 0.03 s or less. At -ab 50
-// the default -lr -10 still stops rays at the tenth reflection, and coarse
-// records (-aa .5 -ar 4) keep the cache small.
+// Every case is cheap, the deep ones too: at -ab 50 the default -lr -10 still
+// stops rays at the tenth reflection, and coarse records (-aa .5 -ar 4) keep
+// the cache small.
 INSTANTIATE_TEST_SUITE_P(
     Cornell, ParameterSweep,
     ::testing::Values(Sweep{"ad1", "-ad 1 -as 0"}, Sweep{"ad1_as512", "-ad 1 -as 512"},
@@ -95,10 +93,10 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Sweep>& sweep) { return std::string(sweep.param.name); });
 
 /// The case, all other settings at their defaults (-as 512, -aa .1,
-/// -ar 256): Radiance 5.4a never finishes it. lazyrad took 4.6 s for one
-/// point (Release, idle machine, 2026-11-22), nearly all of it filling the
-/// cache (9 000-12 000 records at each of levels 2-7); the two-minute limit
-/// leaves room for sanitizer builds and busy machines.
+/// -ar 256): Radiance 5.4a never finishes it. lazyrad finishes one point in
+/// seconds, nearly all of it spent filling the cache (about ten thousand
+/// records at each of levels 2-7); the two-minute limit leaves room for
+/// sanitizer builds and busy machines.
 TEST(ParameterLimits, ZeroWeightLimitFinishes) {
     const std::string point = WriteTempFile("one.pts", "2.5040 3.0600 0.001 0 0 1\n");
     const auto start = std::chrono::steady_clock::now();
@@ -159,7 +157,7 @@ TEST(ParameterClamps, IntegerOptionsRejectRealNumbers) {
 
 /// setambient: with -aa 0 the ambient file is not opened, with a warning.
 TEST(ParameterClamps, ZeroAccuracyLeavesAmbientFileUnopened) {
-    const std::string amb = rt::testing::StiffTempPath("zero_accuracy.amb");
+    const std::string amb = rt::testing::RobustnessTempPath("zero_accuracy.amb");
     std::remove(amb.c_str());
     const RtraceRun run = RunRtrace(kBase + "-aa 0 -af " + amb + " " + kCornell, ThreePoints());
     EXPECT_EQ(run.status, 0);
@@ -171,7 +169,7 @@ TEST(ParameterClamps, ZeroAccuracyLeavesAmbientFileUnopened) {
 /// setambient opens the ambient file whenever -aa > 0, whatever -ad says:
 /// with -ad 0 Radiance writes the file's header and no records, silently.
 TEST(ParameterClamps, NoDivisionsKeepsAmbientFile) {
-    const std::string amb = rt::testing::StiffTempPath("no_divisions.amb");
+    const std::string amb = rt::testing::RobustnessTempPath("no_divisions.amb");
     std::remove(amb.c_str());
     const RtraceRun run = RunRtrace(kBase + "-ad 0 -af " + amb + " " + kCornell, ThreePoints());
     EXPECT_EQ(run.status, 0);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "rtrace/options.h"
+#include "rtrace/command_line.h"
 
 #include <gtest/gtest.h>
 
@@ -379,23 +379,6 @@ TEST(RtraceOptionsParse, AtFileAndEnvironmentExpansion) {
     unsetenv("RTRACE_TEST_OPTS_MISSING");
     EXPECT_EQ(ErrorOf({"$RTRACE_TEST_OPTS_MISSING", "s.rad"}),
               "cannot expand '$RTRACE_TEST_OPTS_MISSING'");
-}
-
-TEST(RtraceOptionsParse, NumberValidation) {
-    EXPECT_TRUE(IsIntArgument("12"));
-    EXPECT_TRUE(IsIntArgument("-3"));
-    EXPECT_TRUE(IsIntArgument(" +4"));
-    EXPECT_FALSE(IsIntArgument("4x"));
-    EXPECT_FALSE(IsIntArgument(""));
-    EXPECT_TRUE(IsRealArgument("1e-3"));
-    EXPECT_TRUE(IsRealArgument(".5"));
-    EXPECT_FALSE(IsRealArgument("inf"));
-    EXPECT_FALSE(IsRealArgument("nan"));
-    EXPECT_FALSE(IsRealArgument("1.5.2"));
-}
-
-TEST(RtraceOptionsParse, SplitWordsHonoursQuotes) {
-    EXPECT_EQ(SplitWords("  a 'b c'\n\"d\"e  "), (std::vector<std::string>{"a", "b c", "d", "e"}));
 }
 
 }  // namespace

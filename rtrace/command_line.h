@@ -1,23 +1,25 @@
 // SPDX-License-Identifier: MIT
 //
-// rtrace's command line (radiance-notes.md §1.1-1.3): every option Radiance
-// 5.4a's rtrace accepts, parsed from one table with one row per flag, with
-// Radiance's value validation, boolean toggles, `@file`/`$VAR` expansion and
-// the exact `-defaults` text. Replaces rtmain.c's option loop, renderopts.c
-// and pmapopt.c.
+// rtrace's command line (radiance-notes.md §1.1-1.3): RtraceOptions and every
+// option Radiance 5.4a's rtrace accepts, parsed from one table with one row
+// per flag, with Radiance's value validation, boolean toggles, `@file`/`$VAR`
+// expansion and the exact `-defaults` text, both from the same table.
+// rvimage takes the same options. Replaces rtmain.c's option loop,
+// renderopts.c and pmapopt.c.
 //
 //   CommandLine cl = ParseCommandLine(args, warn);   // throws rt::Error
-//   if (cl.action == CommandLine::Action::PrintDefaults) out << FormatDefaults(cl.options);
+//   if (std::optional<std::string> text = InfoText(cl)) out << *text;  // -version, -defaults
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "ambient/options.h"
+#include "ambient/ambient_options.h"
 #include "core/diagnostics.h"
-#include "shading/options.h"
+#include "shading/shading_options.h"
 
 namespace rt {
 
@@ -44,12 +46,13 @@ struct RtraceOptions {
     bool limitDistance = false;    // -ld: ray length limited to |input direction|
     bool header = true;            // -h
     bool warnings = true;          // -w
-    bool irradianceAtHit = false;  // -i (Radiance's do_irrad)
-    bool immediateIrradiance = false;  // -I (Radiance's imm_irrad)
+    bool irradianceAtHit = false;  // -i (Radiance's do_irrad); read shading.irradiance
+    bool immediateIrradiance = false;  // -I (Radiance's imm_irrad); read shading.irradiance
     std::string errorFile;         // -e: append messages here; empty = stderr
     int processes = 1;             // -n
     int reportSeconds = 0;         // -t: progress interval (lazyrad extension, as rpict's -t)
-    int seed = 0;                  // -seed: random seed (lazyrad extension; Radiance uses the clock)
+    int seed = 0;                  // -seed: random seed (lazyrad extension; Radiance uses the
+                                   // clock); read shading.seed
 
     /// -ti/-tI (include) or -te/-tE (exclude) modifier names for trace output;
     /// the first use of the other kind restarts the list (Radiance's rule).
@@ -73,8 +76,8 @@ enum class ValueKind {
     Custom,    // variable arity (-ap)
 };
 
-/// One row of the option table. The table drives parsing, the tests and the
-/// README option list.
+/// One row of the option table. The table drives parsing, -defaults, the
+/// tests and the README option list.
 struct OptionInfo {
     std::string_view name;      // e.g. "-ab"
     ValueKind kind;
@@ -98,28 +101,22 @@ struct CommandLine {
     std::vector<std::string> sceneFiles;
 };
 
-/// Parses `args` (argv[0] first) the way rtrace does. Warnings emitted while
-/// parsing (-ap without bandwidth) go to `warn`. Throws rt::Error: User
-/// "command line error at '<arg>'", "missing octree argument", ... (exit 1);
-/// System "cannot expand '<arg>'" (exit 2).
+/// Parses `args` (argv[0] first) the way rtrace does, and derives
+/// options.shading.irradiance (from -i and -I) and options.shading.seed (from
+/// -seed). Warnings emitted while parsing (-ap without bandwidth) go to
+/// `warn`. Throws rt::Error: User "command line error at '<arg>'", "missing
+/// octree argument", ... (exit 1); System "cannot expand '<arg>'" (exit 2).
 CommandLine ParseCommandLine(std::span<const std::string> args, const WarningSink& warn);
 
 /// Radiance's `rtrace -defaults` text for `options` (tabs included).
 std::string FormatDefaults(const RtraceOptions& options);
 
-/// Replaces an argument starting with '@' by the words of that file and one
-/// starting with '$' by the words of that environment variable; nullopt-like
-/// failure is reported by throwing rt::Error(System, "cannot expand '<arg>'").
-/// Returns the argument itself when it needs no expansion.
-std::vector<std::string> ExpandArgument(const std::string& arg);
+/// What -version or -defaults (-help) print, which rtrace and rvimage answer
+/// alike; std::nullopt when `cl` asks for a rendering.
+std::optional<std::string> InfoText(const CommandLine& cl);
 
-/// Splits text into white-space separated words; a word starting with a
-/// double or single quote runs to the matching quote (Radiance's nextword()).
-std::vector<std::string> SplitWords(std::string_view text);
-
-/// Radiance's isint()/isflt() as used by badarg(): leading blanks, then the
-/// number, then end of string or white space.
-bool IsIntArgument(std::string_view s);
-bool IsRealArgument(std::string_view s);
+/// Radiance's name of a -f format letter, as the header's FORMAT= line and
+/// -defaults print it: a "ascii", f "float", d "double", c "32-bit_rle_rgbe".
+std::string_view FormatName(char format);
 
 }  // namespace rt

@@ -2,7 +2,7 @@
 //
 // Stiff cases, scale and location: the cornell box, furnace and skyplane
 // scaled by 1e-4 .. 1e4 and moved a million units from the origin
-// (tests/stiff/generate.sh). Irradiance from surfaces of given radiance is
+// (tests/robustness/generate.sh). Irradiance from surfaces of given radiance is
 // scale-invariant, so every case must give the untransformed answers: the
 // furnace and skyplane exactly, the cornell box within the seed-to-seed
 // spread of the untransformed box against its converged references. (Real
@@ -28,11 +28,11 @@ const std::string kSource = rt::testing::kSourceDir;
 /// Where this test process generates the cases: ctest runs every test in
 /// its own process, in parallel, so each generates its own copy.
 std::string CasesRoot() {
-    return ::testing::TempDir() + "lazyrad_stiff_cases_" + std::to_string(getpid());
+    return ::testing::TempDir() + "lazyrad_robustness_cases_" + std::to_string(getpid());
 }
 
 /// Settings of the issue's Radiance measurements. Bounds: lazyrad on the
-/// untransformed box over seeds 1-8 (2026-11-22) measured 0.65-1.19 % RMS,
+/// untransformed box over seeds 1-8 measured 0.65-1.19 % RMS,
 /// 2.6-8.5 % max on the floor and 0.52-0.97 % RMS, 1.5-4.4 % max on the
 /// edges; the bounds sit above that spread.
 const std::string kCornellOptions = "-I -ab 2 -ad 512 -as 256 -aa .1 -ar 256 -n 1 ";
@@ -40,7 +40,7 @@ const std::string kCornellOptions = "-I -ab 2 -ad 512 -as 256 -aa .1 -ar 256 -n 
 class Transformed : public ::testing::TestWithParam<std::string> {
 protected:
     static void SetUpTestSuite() {
-        const std::string cmd = kSource + "/tests/stiff/generate.sh " + RT_BINARY_DIR +
+        const std::string cmd = kSource + "/tests/robustness/generate.sh " + RT_BINARY_DIR +
                                 "/bin/xform " + CasesRoot();
         ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// rvimage: renders a Radiance view with the rtrace renderer (rtrace/render.h).
+// rvimage: renders a Radiance view with the rtrace renderer (rvimage/rvimage.h).
 //   rvimage [rtrace options] [view options] [-x X -y Y -pa A -pj J]
 //           -o out.exr|out.hdr|out.png [-layers indirect,records,outcome] scene.rad ...
 #include <unistd.h>
@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "rtrace/render.h"
 #include "rtrace/scene_evaluator.h"
+#include "rvimage/rvimage.h"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv, argv + argc);
-    return rt::RunRender(args, std::cout, std::cerr, rt::ProcessEnvironment(),
-                         isatty(STDERR_FILENO) != 0);
+    return rt::RunRvimage(args, std::cout, std::cerr, rt::ProcessEnvironment(),
+                          isatty(STDERR_FILENO) != 0);
 }

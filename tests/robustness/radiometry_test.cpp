@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
 // Stiff cases, radiometry (issue "Numerical stability"), in a closed 1 m cube
-// (tests/stiff/scenes/cube_*.rad): a lamp of radiance 1e10 among near-black
+// (tests/robustness/scenes/cube_*.rad): a lamp of radiance 1e10 among near-black
 // walls must give exactly 1e10 times what a lamp of radiance 1 gives; black
 // walls must add exactly no indirect light; walls of reflectance 0.999 must
 // give the furnace's analytic answer after 50 bounces. Each case runs
@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/stiff/stiff_run.h"
+#include "tests/robustness/robustness_run.h"
 #include "tests/testing/rtrace_rows.h"
 
 namespace {
@@ -27,11 +27,11 @@ using rt::testing::MaxRelativeDifference;
 using rt::testing::Rows;
 using rt::testing::RtraceRun;
 using rt::testing::RunRtrace;
-using rt::testing::StiffScene;
+using rt::testing::RobustnessScene;
 
-const std::string kWalls = StiffScene("cube_walls.rad");
-const std::string kPoints = StiffScene("cube_points.pts");
-const std::string kRays = StiffScene("cube_rays.txt");
+const std::string kWalls = RobustnessScene("cube_walls.rad");
+const std::string kPoints = RobustnessScene("cube_points.pts");
+const std::string kRays = RobustnessScene("cube_rays.txt");
 constexpr size_t kCount = 7;    // lines of cube_points.pts and of cube_rays.txt
 constexpr size_t kLampRay = 5;  // the ray of cube_rays.txt that looks at the lamp
 
@@ -42,7 +42,7 @@ struct Answers {
 };
 Answers RunCube(const std::string& options, const std::string& scene) {
     Answers a;
-    const std::string args = options + " -n 1 " + StiffScene(scene) + " " + kWalls;
+    const std::string args = options + " -n 1 " + RobustnessScene(scene) + " " + kWalls;
     for (auto [prefix, input, out] :
          {std::tuple{"-I ", &kPoints, &a.sensors}, std::tuple{"", &kRays, &a.rays}}) {
         const RtraceRun run = RunRtrace(prefix + args, *input);
@@ -61,8 +61,8 @@ Rows Scaled(Rows rows, double factor) {
     return rows;
 }
 
-/// Direct only; two bounces with and without the cache; five bounces. Each
-/// setting takes 0.7 s or less for both lamps (Release, 2026-11-22).
+/// Direct only; two bounces with and without the cache; five bounces; each
+/// cheap enough to run for both lamps.
 const char* const kSettings[] = {
     "-ab 0",
     "-ab 2 -ad 256 -as 128 -aa .15 -ar 32 -seed 1",
@@ -73,8 +73,8 @@ const char* const kSettings[] = {
 /// Nothing in the calculation may depend on the absolute level of light:
 /// every decision (shadow testing, super-sampling, Russian roulette) is
 /// relative. The output has 7 significant digits, so equal answers agree to
-/// 5e-7 after scaling; on 2026-11-22 they agreed to the last digit at all
-/// four settings. Bound 2e-6. (At radiance 1 the ceiling sensor, which sees
+/// 5e-7 after scaling; they agree to the last digit at all four settings.
+/// Bound 2e-6. (At radiance 1 the ceiling sensor, which sees
 /// no lamp, gets 6e-5 W/m² of reflected light, and the walls return 3e-5.)
 TEST(BrightSource, ScalesWithSourceRadiance) {
     for (const char* options : kSettings) {
@@ -141,9 +141,9 @@ const std::string kFurnace = "-av 1 1 1 -aw 0 -seed 1 ";
 
 /// -lr 0 -lw 1e-30: no ray is cut short (the weights fall to 0.5^51 = 4e-16
 /// with the cache), so all 50 bounces happen. With 50 record levels of
-/// coarse records (0.05 s) the answers came out exact to the 7 printed
-/// digits (seeds 1-3); with -aa .1 -ar 256 (fine records, 14 s for two
-/// sensors) 1.3e-4 low. Bound 5e-4.
+/// coarse records the answers came out exact to the 7 printed digits (seeds
+/// 1-3); with -aa .1 -ar 256 (fine records, far slower) 1.3e-4 low. Bound
+/// 5e-4.
 TEST(Furnace, FiftyBouncesConverge) {
     for (const char* options : {"-ab 50 -ad 16 -as 8 -aa .2 -ar 4 -lr 0 -lw 1e-30",
                                 "-ab 50 -ad 64 -as 32 -aa .3 -ar 4 -lr 0 -lw 1e-30"}) {
@@ -205,13 +205,13 @@ TEST(Furnace, DeepBouncesBelowTheWeightLimitStayExact) {
 }
 
 /// Without the cache, -ad 1 asks for one sample per hemisphere: 50 bounces
-/// are 50 rays per sensor (Radiance: ns = 1). Regression: lazyrad took at
-/// least 1 x 3 divisions until commit 6ba8b1d, so this traced 3^50 rays and
-/// never finished; now 0.03 s, exact to the printed digits.
+/// are 50 rays per sensor (Radiance: ns = 1), exact to the printed digits.
+/// A floor of 1 x 3 divisions per hemisphere would trace 3^50 rays and never
+/// finish.
 TEST(Furnace, FiftyBouncesWithoutCacheFinish) {
     const std::string options = "-ab 50 -aa 0 -ad 1 -as 0 -lr 0 -lw 1e-30";
     const RtraceRun run = RunRtrace(
-        "-I -n 1 " + kFurnace + options + " " + StiffScene("cube_furnace.rad") + " " + kWalls,
+        "-I -n 1 " + kFurnace + options + " " + RobustnessScene("cube_furnace.rad") + " " + kWalls,
         kPoints, 60);
     ASSERT_EQ(run.status, 0) << "124 means it did not finish in 60 s\n" << run.err;
     const Rows rows = run.Numbers();

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Generates the scale and location cases of the stiff-case suite (issue
+# Generates the scale and location cases of the robustness suite (issue
 # "Numerical stability"): the cornell box, the furnace and the skyplane, each
 # scaled by 1e-4, 1e-2, 1, 1e2, 1e4 and moved to (1e6, -2e6, 5e5), with their
 # measurement points and rays transformed the same way (positions scaled or
@@ -7,7 +7,7 @@
 # depend on scale or location, so every case must reproduce the untransformed
 # answers.
 #
-#   tests/stiff/generate.sh XFORM OUTDIR
+#   tests/robustness/generate.sh XFORM OUTDIR
 #
 # XFORM is lazyrad's xform (build/bin/xform); OUTDIR/<case>/ receives
 # cornell.rad floor.pts edges.pts furnace.rad furnace_points.txt

@@ -1,35 +1,30 @@
 // SPDX-License-Identifier: MIT
 //
-// rvimage: renders a Radiance view to a picture with the rtrace renderer, as
+// rvimage's picture: a Radiance view rendered with the rtrace renderer, as
 // Radiance's rpict does (one ray per pixel through its centre, optionally
-// jittered; no adaptive sampling). Output is OpenEXR (float RGB plus optional
-// layers and provenance metadata), Radiance RGBE, or a tone-mapped PNG. The
-// extra layers show what the irradiance cache did:
+// jittered; no adaptive sampling), plus layers that show what the irradiance
+// cache did:
 //   indirect  indirect.R/G/B: indirect irradiance at the first surface (W/m²)
 //   outcome   one channel: 0 none, 1 interpolated, 2 extrapolated,
 //             3 computed (new hemisphere), 4 fallback (-av)
 //   records   records.R/G/B: every cache record's validity disc (radius × -aa)
 //             drawn on its surface where visible, coloured by level
 //
-//   RenderCommandLine cl = ParseRenderCommandLine(args, warn);  // throws rt::Error
-//   Image img = RenderView(*evaluator, SetupView(cl.settings.view), w, h, cl.settings, ...);
+//   Image img = RenderView(*evaluator, SetupView(settings.view), w, h, settings, ...);
 #pragma once
 
 #include <cstddef>
 #include <functional>
-#include <iosfwd>
 #include <optional>
 #include <span>
 #include <string>
-#include <vector>
 
 #include "ambient/record.h"
 #include "core/diagnostics.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "image/image.h"
-#include "rtrace/options.h"
-#include "rtrace/run.h"
+#include "rtrace/ray_evaluator.h"
 #include "view/view.h"
 
 namespace rt {
@@ -39,7 +34,7 @@ inline constexpr float kOutcomeNone = 0, kOutcomeInterpolated = 1, kOutcomeExtra
                        kOutcomeComputed = 3, kOutcomeFallback = 4;
 
 /// What rvimage adds to rtrace's options.
-struct RenderSettings {
+struct PictureSettings {
     View view;                  // -vf -vt? -vp -vd -vu -vh -vv -vo -va -vs -vl
     int xResolution = 512;      // -x: maximum width in pixels (rpict's default)
     int yResolution = 512;      // -y: maximum height
@@ -53,28 +48,17 @@ struct RenderSettings {
                                  // 1 is the disc where the record alone may be used, 0 dots
 };
 
-struct RenderCommandLine {
-    RenderSettings settings;
-    CommandLine rtrace;  // everything else, parsed by rtrace's ParseCommandLine
-};
-
-/// Pulls the view options, -x -y -pa -pj -o and -layers out of `args` (argv[0]
-/// first; @file and $VAR words are expanded first) and hands the rest to
-/// ParseCommandLine. Throws rt::Error (User) for bad values or a missing -o.
-[[nodiscard]] RenderCommandLine ParseRenderCommandLine(std::span<const std::string> args,
-                                                       const WarningSink& warn);
-
 /// Called after each batch with pixels done and the total.
-using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
+using PictureProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 /// Traces one ray per pixel (the pixel centre, moved by up to ±jitter/2 pixel
 /// with a generator seeded from -seed and the pixel, so runs repeat) through
 /// `evaluator` in batches of `batchSize` rays, top row first. Pixels outside
 /// the projection stay black. Adds the layers `settings` asks for.
 [[nodiscard]] Image RenderView(RayEvaluator& evaluator, const PreparedView& view, int width,
-                               int height, const RenderSettings& settings, unsigned seed,
+                               int height, const PictureSettings& settings, unsigned seed,
                                double accuracy, std::size_t batchSize,
-                               const RenderProgress& progress, const WarningSink& warn);
+                               const PictureProgress& progress, const WarningSink& warn);
 
 /// Level colours of the records layer: 0 red, 1 green, 2 blue, 3 yellow,
 /// 4 magenta, 5 and deeper cyan.
@@ -104,13 +88,5 @@ std::size_t DrawRecords(Image& image, const PreparedView& view,
 /// with the records layer's colours laid over it; already display-linear, to
 /// be written with exposure 1. Requires the records layers.
 [[nodiscard]] Image RecordsPicture(const Image& rendered, double exposure);
-
-/// The whole program: parse, render, write. -defaults and -version print to
-/// `out`. The progress bar goes to `err` only when `errIsTerminal`; otherwise
-/// nothing is printed there but warnings, errors and (with -t N) a line every
-/// N seconds plus the summary. Returns 0, or Radiance's exit codes 1 (user),
-/// 2 (system), 3 (internal); messages read "rvimage: <kind> - <text>".
-int RunRender(std::span<const std::string> args, std::ostream& out, std::ostream& err,
-              const RunEnvironment& env, bool errIsTerminal);
 
 }  // namespace rt

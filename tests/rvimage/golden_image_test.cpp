@@ -38,8 +38,8 @@
 #include "core/rgb.h"
 #include "image/compare.h"
 #include "image/hdr.h"
-#include "rtrace/render.h"
 #include "rtrace/scene_evaluator.h"
+#include "rvimage/rvimage.h"
 
 namespace rt {
 namespace {
@@ -123,7 +123,7 @@ Image RenderCase(const GoldenCase& c, const std::string& path) {
         return MakeSceneEvaluator(files, options, warn, "");
     };
     std::ostringstream out, err;
-    EXPECT_EQ(RunRender(args, out, err, env, false), 0) << err.str();
+    EXPECT_EQ(RunRvimage(args, out, err, env, false), 0) << err.str();
     return ReadHdr(path);
 }
 

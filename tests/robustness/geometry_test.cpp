@@ -6,8 +6,8 @@
 // 1e-6 gaps in a closed lit cube; rays at 89.99 degrees to a surface. Each
 // case runs build/bin/rtrace end to end and compares with the converged
 // references of scenes/cornell/ref or with the same scene without the defect.
-// Tolerances quote lazyrad's own spread, measured on 2026-11-22 (Release
-// build, `-n 1`, seeds as stated).
+// Tolerances sit above lazyrad's own spread (Release build, `-n 1`, seeds as
+// stated).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/stiff/stiff_run.h"
+#include "tests/robustness/robustness_run.h"
 #include "tests/testing/rtrace_rows.h"
 
 namespace {
@@ -29,7 +29,7 @@ using rt::testing::MaxRelativeDifference;
 using rt::testing::Rows;
 using rt::testing::RtraceRun;
 using rt::testing::RunRtrace;
-using rt::testing::StiffScene;
+using rt::testing::RobustnessScene;
 using rt::testing::WriteTempFile;
 
 const std::string kSource = rt::testing::kSourceDir;
@@ -211,8 +211,8 @@ std::string BackWallRays() {
 const std::string kBackWallOptions = "-ab 1 -aa 0 -ad 1024 -as 0 -n 1 -seed 1 ";
 
 TEST(CoincidentPolygons, ExactCopyChangesNothing) {
-    const std::string copy = StiffScene("cornell_back_copy.rad");
-    const std::string near = StiffScene("cornell_back_near_copy.rad");
+    const std::string copy = RobustnessScene("cornell_back_copy.rad");
+    const std::string near = RobustnessScene("cornell_back_near_copy.rad");
     const std::string cam = kSource + "/scenes/cornell/cam32.rays";
     // Direct light only: every primary ray. The exact copy changes no digit;
     // with the copy 1e-7 in front too, rays stop on that nearer copy, which
@@ -239,8 +239,8 @@ TEST(CoincidentPolygons, ExactCopyChangesNothing) {
 /// 0.63-0.75 % RMS, 1.9-2.6 % max (the single wall: 0.52-0.97 %, 1.5-4.4 %).
 TEST(CoincidentPolygons, NearCopyMatchesEdgeReference) {
     const Rows rows = rt::testing::RunRows(kCornellOptions + kCornell + " " +
-                                               StiffScene("cornell_back_copy.rad") + " " +
-                                               StiffScene("cornell_back_near_copy.rad"),
+                                               RobustnessScene("cornell_back_copy.rad") + " " +
+                                               RobustnessScene("cornell_back_near_copy.rad"),
                                            kSource + "/scenes/cornell/edges.pts");
     ASSERT_TRUE(FiniteNonNegative(rows, 40, 3));
     const auto e = rt::testing::CompareWithReference(rows, kEdgesRef);
@@ -257,7 +257,7 @@ TEST(CoincidentPolygons, NearCopyMatchesEdgeReference) {
 /// came out darker, by up to 0.70 %. Coincident hits of equal rank now go to
 /// the nearer surface.
 TEST(CoincidentPolygons, NearCopyCausesNoAcne) {
-    const std::string near = StiffScene("cornell_back_near_copy.rad");
+    const std::string near = RobustnessScene("cornell_back_near_copy.rad");
     const std::string rays = BackWallRays();
     const Rows single = rt::testing::RunRows(kBackWallOptions + kCornell, rays);
     const Rows withCopy = rt::testing::RunRows(kBackWallOptions + kCornell + " " + near, rays);
@@ -317,7 +317,7 @@ void ExpectDegenerateSkipped(const std::string& scene, const std::vector<std::st
 /// Exactly zero cross-product sums: warned with file:line, skipped (see
 /// tests/scene/build_scene_test.cpp DegeneratePolygonsWarn).
 TEST(DegeneratePolygons, ZeroAreaAreWarnedAndSkipped) {
-    const std::string scene = StiffScene("degenerate_polygons.rad");
+    const std::string scene = RobustnessScene("degenerate_polygons.rad");
     ExpectDegenerateSkipped(
         scene, {scene + ":7: polygon \"collinear\"", scene + ":13: polygon \"one_point\"",
                 scene + ":19: polygon \"folded\"", scene + ":25: polygon \"lamp_collinear\""});
@@ -325,14 +325,14 @@ TEST(DegeneratePolygons, ZeroAreaAreWarnedAndSkipped) {
 
 /// Collinear in decimal but not in binary: the area is rounding noise.
 TEST(DegeneratePolygons, RoundedCollinearAreWarnedAndSkipped) {
-    const std::string scene = StiffScene("collinear_rounded_polygons.rad");
+    const std::string scene = RobustnessScene("collinear_rounded_polygons.rad");
     ExpectDegenerateSkipped(scene, {scene + ":7: polygon \"collinear_rounded\"",
                                     scene + ":12: polygon \"lamp_collinear_rounded\""});
 }
 
 // ----- gaps between walls -----
 
-const std::string kLitCube = StiffScene("cube_lit_outside.rad") + " ";
+const std::string kLitCube = RobustnessScene("cube_lit_outside.rad") + " ";
 
 /// Rays from the middle of the cube aimed 1e-10 .. 3e-7 beside the edges of
 /// the slits (at their floor, wall and ceiling sides) must hit the surface
@@ -362,7 +362,7 @@ TEST(Gaps, SlitEdgesHold) {
                       t.z - 0.5);
         rays += line;
     }
-    const RtraceRun run = RunRtrace("-ab 0 -ovs " + kLitCube + StiffScene("cube_walls_gaps.rad"),
+    const RtraceRun run = RunRtrace("-ab 0 -ovs " + kLitCube + RobustnessScene("cube_walls_gaps.rad"),
                                     WriteTempFile("slits.rays", rays));
     ASSERT_EQ(run.status, 0) << run.err;
     const auto words = run.Words();
@@ -386,13 +386,13 @@ TEST(Gaps, SlitEdgesHold) {
 /// subtend up to 1e-3 sr, and 1-3 sample rays per run really pass: each
 /// was checked to exit 6e-7 to 8e-7 inside a slit.)
 TEST(Gaps, SensorsSeeNoLeak) {
-    const std::string points = StiffScene("cube_gaps.pts");
+    const std::string points = RobustnessScene("cube_gaps.pts");
     for (const std::string opts : {"-I -ab 1 -ad 512 -as 256 -aa .1 -ar 64 -n 1 -seed 1 ",
                                    "-I -ab 1 -aa 0 -ad 1024 -as 0 -n 1 -seed 1 "}) {
         const Rows closed =
-            rt::testing::RunRows(opts + kLitCube + StiffScene("cube_walls.rad"), points);
+            rt::testing::RunRows(opts + kLitCube + RobustnessScene("cube_walls.rad"), points);
         const Rows gaps =
-            rt::testing::RunRows(opts + kLitCube + StiffScene("cube_walls_gaps.rad"), points);
+            rt::testing::RunRows(opts + kLitCube + RobustnessScene("cube_walls_gaps.rad"), points);
         ASSERT_TRUE(FiniteNonNegative(closed, 28, 3)) << opts;
         ASSERT_TRUE(FiniteNonNegative(gaps, 28, 3)) << opts;
         // Every sensor gets light (the dimmest, 5 cm from the top corner and

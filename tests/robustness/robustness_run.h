@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// Helpers of the stiff-case suite (tests/stiff/*_test.cpp): run build/bin/rtrace
+// Helpers of the robustness suite (tests/robustness/*_test.cpp): run build/bin/rtrace
 // with warnings on, keeping standard output, standard error and the exit status
 // apart; read its rows as numbers or words; compare two runs; write small input
 // files into the test's temporary directory.
@@ -26,46 +26,46 @@
 
 namespace rt::testing {
 
-/// A file of tests/stiff/scenes/.
-inline std::string StiffScene(const std::string& name) {
-    return kSourceDir + "/tests/stiff/scenes/" + name;
+/// A file of tests/robustness/scenes/.
+inline std::string RobustnessScene(const std::string& name) {
+    return kSourceDir + "/tests/robustness/scenes/" + name;
 }
 
-/// The start of every StiffTempPath of this process.
-inline std::string StiffTempPrefix() {
-    return "lazyrad_stiff_" + std::to_string(getpid()) + "_";
+/// The start of every RobustnessTempPath of this process.
+inline std::string RobustnessTempPrefix() {
+    return "lazyrad_robustness_" + std::to_string(getpid()) + "_";
 }
 
 /// A path in GoogleTest's temporary directory, unique to this process (ctest
 /// runs each test in its own process, possibly in parallel).
-inline std::string StiffTempPath(const std::string& name) {
-    return ::testing::TempDir() + StiffTempPrefix() + name;
+inline std::string RobustnessTempPath(const std::string& name) {
+    return ::testing::TempDir() + RobustnessTempPrefix() + name;
 }
 
-/// Removes this process's StiffTempPath files when the tests end.
-class StiffTempCleanup : public ::testing::Environment {
+/// Removes this process's RobustnessTempPath files when the tests end.
+class RobustnessTempCleanup : public ::testing::Environment {
 public:
     void TearDown() override {
         std::error_code ec;
         for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir(), ec)) {
-            if (entry.path().filename().string().rfind(StiffTempPrefix(), 0) == 0) {
+            if (entry.path().filename().string().rfind(RobustnessTempPrefix(), 0) == 0) {
                 std::filesystem::remove(entry.path(), ec);
             }
         }
     }
 };
 /// Registered once per test program (an inline variable is one object).
-inline ::testing::Environment* const kStiffTempCleanup =
-    ::testing::AddGlobalTestEnvironment(new StiffTempCleanup);
+inline ::testing::Environment* const kRobustnessTempCleanup =
+    ::testing::AddGlobalTestEnvironment(new RobustnessTempCleanup);
 
 inline std::string ReadText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// Writes `text` to StiffTempPath(name) and returns that path.
+/// Writes `text` to RobustnessTempPath(name) and returns that path.
 inline std::string WriteTempFile(const std::string& name, const std::string& text) {
-    const std::string path = StiffTempPath(name);
+    const std::string path = RobustnessTempPath(name);
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }
@@ -109,7 +109,7 @@ struct RtraceRun {
 inline RtraceRun RunRtrace(const std::string& args, const std::string& input,
                            int timeoutSeconds = 0) {
     const std::string path = input.front() == '/' ? input : kSourceDir + "/" + input;
-    const std::string errPath = StiffTempPath("stderr.txt");
+    const std::string errPath = RobustnessTempPath("stderr.txt");
     std::string command = kRtrace + " -h " + args + " < " + path + " 2> " + errPath;
     if (timeoutSeconds > 0)
         command = "timeout " + std::to_string(timeoutSeconds) + " " + command;

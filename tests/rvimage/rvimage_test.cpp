@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "rtrace/render.h"
+#include "rvimage/rvimage.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -44,7 +44,7 @@ RunEnvironment SceneEnvironment() {
 int Render(std::vector<std::string> args, std::string* errText = nullptr) {
     args.insert(args.begin(), "rvimage");
     std::ostringstream out, err;
-    const int status = RunRender(args, out, err, SceneEnvironment(), false);
+    const int status = RunRvimage(args, out, err, SceneEnvironment(), false);
     if (errText) *errText = err.str();
     return status;
 }
@@ -66,12 +66,12 @@ public:
     std::vector<RayQuery> rays;
 };
 
-TEST(RenderCommandLine, PullsOutViewAndPictureOptions) {
+TEST(RvimageCommandLine, PullsOutViewAndPictureOptions) {
     const std::vector<std::string> args = {"rvimage", "-ab",   "2",       "-vp",  "1", "2", "3",
                                            "-vh",     "30",    "-x",      "64",   "-y", "32",
                                            "-pj",     "0.5",   "-o",      "a.exr", "-layers",
                                            "indirect,outcome", "-n",      "2",    "scene.rad"};
-    const RenderCommandLine cl = ParseRenderCommandLine(args, {});
+    const RvimageCommandLine cl = ParseRvimageCommandLine(args, {});
     EXPECT_EQ(cl.settings.view.vp, Vec3(1, 2, 3));
     EXPECT_EQ(cl.settings.view.vh, 30);
     EXPECT_EQ(cl.settings.xResolution, 64);
@@ -87,10 +87,10 @@ TEST(RenderCommandLine, PullsOutViewAndPictureOptions) {
     EXPECT_EQ(cl.rtrace.sceneFiles, std::vector<std::string>{"scene.rad"});
 }
 
-TEST(RenderCommandLine, RejectsBadInput) {
+TEST(RvimageCommandLine, RejectsBadInput) {
     auto parse = [](std::vector<std::string> args) {
         args.insert(args.begin(), "rvimage");
-        return ParseRenderCommandLine(args, {});
+        return ParseRvimageCommandLine(args, {});
     };
     EXPECT_THROW(parse({"s.rad"}), Error);                             // no -o
     EXPECT_THROW(parse({"-o", "a.tif", "s.rad"}), Error);              // unknown format
@@ -130,7 +130,7 @@ TEST(ProjectToView, InvertsViewRay) {
 }
 
 TEST(RenderView, OneRayPerPixelTopRowFirst) {
-    RenderSettings s;
+    PictureSettings s;
     s.outcomeLayer = s.indirectLayer = true;
     View v;
     const PreparedView pv = SetupView(v);
@@ -153,7 +153,7 @@ TEST(RenderView, OneRayPerPixelTopRowFirst) {
 }
 
 TEST(RenderView, JitterRepeatsAndStaysInThePixel) {
-    RenderSettings s;
+    PictureSettings s;
     s.jitter = 1.0;
     View v;
     const PreparedView pv = SetupView(v);
@@ -173,7 +173,7 @@ TEST(RenderView, JitterRepeatsAndStaysInThePixel) {
 }
 
 TEST(RenderView, FisheyeCornersAreBlackAndNotTraced) {
-    RenderSettings s;
+    PictureSettings s;
     View v;
     v.type = ViewType::Angular;
     v.vh = v.vv = 360;  // the image circle touches the picture's edges
