@@ -32,18 +32,10 @@ using testing::FrameAround;
 using testing::HalfPlaneCeiling;
 using testing::RectangleEmitter;
 using testing::Tilt;
+using testing::Options;
+using testing::OffsetRectangle;
 
 const Vec3 kTiltedNormal = Normalize(Vec3(0.3, -0.5, 0.81));
-
-HemisphereOptions Options(int divisions, int superSamples, double weight = 1.0,
-                          bool caching = true) {
-    HemisphereOptions o;
-    o.divisions = divisions;
-    o.superSamples = superSamples;
-    o.weight = weight;
-    o.caching = caching;
-    return o;
-}
 
 /// Row t and column p of a direction in the hemisphere's own frame.
 std::pair<int, int> CellOf(const Hemisphere& h, const Vec3& d) {
@@ -332,14 +324,7 @@ TEST(Hemisphere, GradientsMatchHalfPlaneEmitter) {
 // 1% rotational (measured 0.1%).
 TEST(Hemisphere, GradientsMatchFiniteDifferencesForRectangleEmitter) {
     const Vec3 n = kTiltedNormal;
-    RectangleEmitter scene;
-    scene.worldFromLocal = FrameAround(n);
-    scene.x0 = 0.2;
-    scene.x1 = 1.5;
-    scene.y0 = -0.3;
-    scene.y1 = 0.9;
-    scene.height = 1.0;
-    scene.radiance = 2.0;
+    const RectangleEmitter scene = OffsetRectangle(FrameAround(n));
     const Vec3 p(0.05, -0.1, 0);
     const Vec3 z(0, 0, 1);
     const double e0 = scene.Irradiance(p, z);

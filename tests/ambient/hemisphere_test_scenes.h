@@ -19,6 +19,17 @@
 namespace rt::testing {
 
 /// Frame with n along unit `n` (and the deterministic Perpendicular() u).
+/// Hemisphere options with the given counts (weight 1 and the cache by default).
+inline HemisphereOptions Options(int divisions, int superSamples, double weight = 1.0,
+                                 bool caching = true) {
+    HemisphereOptions o;
+    o.divisions = divisions;
+    o.superSamples = superSamples;
+    o.weight = weight;
+    o.caching = caching;
+    return o;
+}
+
 inline Frame FrameAround(const Vec3& n) {
     Frame f;
     f.n = n;
@@ -136,6 +147,20 @@ struct RectangleEmitter {
         return radiance * Dot(localNormal, VectorIrradianceFactor(localPoint));
     }
 };
+
+/// The gradient tests' emitter: a 1.3 × 1.2 rectangle of radiance 2 one unit
+/// above the point's plane, off to one side of it, in `frame`.
+inline RectangleEmitter OffsetRectangle(const Frame& frame) {
+    RectangleEmitter scene;
+    scene.worldFromLocal = frame;
+    scene.x0 = 0.2;
+    scene.x1 = 1.5;
+    scene.y0 = -0.3;
+    scene.y1 = 0.9;
+    scene.height = 1.0;
+    scene.radiance = 2.0;
+    return scene;
+}
 
 /// Upper chi² quantile for `dof` degrees of freedom at standard-normal z
 /// (z = 3.09 for 1e-3), Wilson–Hilferty; accurate to ~1% for dof >= 10.

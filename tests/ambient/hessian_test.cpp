@@ -35,21 +35,13 @@ using testing::FrameAround;
 using testing::HalfPlaneCeiling;
 using testing::RectangleEmitter;
 using testing::Tilt;
+using testing::Options;
+using testing::OffsetRectangle;
 
 const Vec3 kUp(0, 0, 1);
 const Vec3 kTiltedNormal = Normalize(Vec3(0.3, -0.5, 0.81));
 /// Radiance's far limit for a scene cube of size 4.
 const double kFar = HessianFarDistance(4.0);
-
-HemisphereOptions Options(int divisions, int superSamples, double weight = 1.0,
-                          bool caching = true) {
-    HemisphereOptions o;
-    o.divisions = divisions;
-    o.superSamples = superSamples;
-    o.weight = weight;
-    o.caching = caching;
-    return o;
-}
 
 AmbientLimits Limits(double minRadius, double maxRadius) {
     AmbientLimits l;
@@ -628,14 +620,7 @@ double Largest(const Tangent2& t) {
 // its largest entry, with Radiance's sign; the error must be at least halved
 // from 64 × 64; rotational gradient within 1%.
 TEST(HessianRecord, RectangleEmitterMatchesFiniteDifferences) {
-    RectangleEmitter scene;
-    scene.worldFromLocal = FrameAround(kTiltedNormal);
-    scene.x0 = 0.2;
-    scene.x1 = 1.5;
-    scene.y0 = -0.3;
-    scene.y1 = 0.9;
-    scene.height = 1.0;
-    scene.radiance = 2.0;
+    const RectangleEmitter scene = OffsetRectangle(FrameAround(kTiltedNormal));
     const Vec3 p(0.05, -0.1, 0);
     const auto [gRef, hRef] =
         RelativeDerivatives([&](const Vec3& q) { return scene.Irradiance(q, kUp); }, p, 1e-3);

@@ -18,6 +18,7 @@ namespace {
 
 using testing::ConstantEnvironment;
 using testing::FrameAround;
+using testing::Options;
 
 const Vec3 kNormal = Normalize(Vec3(-0.2, 0.4, 0.9));
 
@@ -44,13 +45,6 @@ Hemisphere Synthetic(double inverseDistanceSum, int count, const Vec3& posGradie
     h.posGradient = posGradient;
     h.dirGradient = dirGradient;
     return h;
-}
-
-HemisphereOptions Options(int divisions, int superSamples) {
-    HemisphereOptions o;
-    o.divisions = divisions;
-    o.superSamples = superSamples;
-    return o;
 }
 
 TEST(RecordMaker, FillsEveryField) {
