@@ -184,12 +184,7 @@ TEST(Hemisphere, DirectionsFollowCosineDistributionChi2) {
     std::vector<double> thetaCounts(kThetaBins, 0.0), phiCounts(kPhiBins, 0.0);
     long total = 0;
     const AmbientTraceFn trace = [&](const Vec3& d) {
-        const Vec3 l = fixed.ToLocal(d);
-        const int ti = std::min(kThetaBins - 1, static_cast<int>(l.z * kThetaBins));
-        double phi = std::atan2(l.y, l.x);
-        if (phi < 0)
-            phi += 2 * kPi;
-        const int pi = std::min(kPhiBins - 1, static_cast<int>(phi / (2 * kPi) * kPhiBins));
+        const auto [ti, pi] = testing::BinOf(fixed, d, kThetaBins, kPhiBins);
         ++counts[ti * kPhiBins + pi];
         ++thetaCounts[ti];
         ++phiCounts[pi];

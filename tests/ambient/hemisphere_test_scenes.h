@@ -8,6 +8,7 @@
 // same scene can be tested around any normal.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -28,6 +29,22 @@ inline HemisphereOptions Options(int divisions, int superSamples, double weight 
     o.weight = weight;
     o.caching = caching;
     return o;
+}
+
+/// Bin of unit direction `d` on the hemisphere around `frame.n` for the
+/// samplers' chi² tests: `thetaBins` equal steps of cos θ and `phiBins` equal
+/// steps of azimuth from frame.u.
+struct DirectionBin {
+    int theta = 0, phi = 0;
+};
+inline DirectionBin BinOf(const Frame& frame, const Vec3& d, int thetaBins, int phiBins) {
+    const Vec3 l = frame.ToLocal(d);
+    DirectionBin b;
+    b.theta = std::min(thetaBins - 1, static_cast<int>(l.z * thetaBins));
+    double phi = std::atan2(l.y, l.x);
+    if (phi < 0) phi += 2 * kPi;
+    b.phi = std::min(phiBins - 1, static_cast<int>(phi / (2 * kPi) * phiBins));
+    return b;
 }
 
 inline Frame FrameAround(const Vec3& n) {

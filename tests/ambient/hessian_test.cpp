@@ -29,14 +29,9 @@
 namespace rt {
 namespace {
 
-using testing::Chi2Quantile;
-using testing::ConstantEnvironment;
-using testing::FrameAround;
-using testing::HalfPlaneCeiling;
-using testing::RectangleEmitter;
-using testing::Tilt;
-using testing::Options;
-using testing::OffsetRectangle;
+using testing::Chi2Quantile, testing::ConstantEnvironment, testing::FrameAround,
+    testing::HalfPlaneCeiling, testing::OffsetRectangle, testing::Options,
+    testing::RectangleEmitter, testing::Tilt;
 
 const Vec3 kUp(0, 0, 1);
 const Vec3 kTiltedNormal = Normalize(Vec3(0.3, -0.5, 0.81));
@@ -194,12 +189,7 @@ TEST(HessianHemisphere, DirectionsFollowCosineDistributionChi2) {
     std::vector<double> counts(kThetaBins * kPhiBins, 0.0);
     long total = 0;
     const AmbientTraceFn trace = [&](const Vec3& d) {
-        const Vec3 l = fixed.ToLocal(d);
-        const int ti = std::min(kThetaBins - 1, static_cast<int>(l.z * kThetaBins));
-        double phi = std::atan2(l.y, l.x);
-        if (phi < 0)
-            phi += 2 * kPi;
-        const int pi = std::min(kPhiBins - 1, static_cast<int>(phi / (2 * kPi) * kPhiBins));
+        const auto [ti, pi] = testing::BinOf(fixed, d, kThetaBins, kPhiBins);
         ++counts[static_cast<std::size_t>(ti * kPhiBins + pi)];
         ++total;
         return Sample(1, 1);
