@@ -85,6 +85,15 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         const double cosNormals = Dot(r.normal, q.normal);
         if (cosNormals <= 0) return;
         const Vec3 delta = q.point - r.position;
+        const double chord2 = 2.0 - 2.0 * cosNormals;
+        // The "behind" test: Radiance 5 measures along the record's own
+        // normal; the classic rule along the mean of the two normals.
+        if (hat ? chord2 >= maxAngle * maxAngle || Dot(delta, r.normal) < -behindTolerance
+                : 0.5 * Dot(delta, r.normal + q.normal) < -behindTolerance) {
+            return;
+        }
+        // Distance in units of the record's radius (its ellipse for
+        // anisotropic records).
         const Vec3 u = r.uAxis;
         const Vec3 v = r.VAxis();
         const double du = Dot(delta, u) / r.radius[0];
@@ -93,18 +102,12 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         const double e1 = du * du + dv * dv + dn * dn;
         double w = 0;
         if (hat) {
-            // Radiance 5: chord between the normals, behind test on the
-            // record's own normal, elliptical distance.
-            const double chord2 = 2.0 - 2.0 * cosNormals;
-            if (chord2 >= maxAngle * maxAngle) return;
-            if (Dot(delta, r.normal) < -behindTolerance) return;
+            // Radiance 5: a hat in the normals' chord and the distance.
             if (e1 >= a * a) return;
             w = (1.0 - std::sqrt(chord2) / maxAngle) * (1.0 - std::sqrt(e1) / a);
             if (!(w > 0)) return;
         } else {
-            if (0.5 * Dot(delta, r.normal + q.normal) < -behindTolerance) return;
-            // Split-sphere error: distance in units of the record's radius (its
-            // ellipse for anisotropic records) plus the normal divergence.
+            // Split-sphere error: the distance plus the normal divergence.
             const double e2 = std::max(0.0, 1.0 - cosNormals);
             const double eps = std::sqrt(e1) + std::sqrt(e2);
             if (eps >= a) return;  // weight 1/ε must exceed 1/a

@@ -171,46 +171,41 @@ struct OptionRow {
 
 constexpr std::string_view kYes = "yes";
 
+/// A row of `kind` whose action `f` goes in member `field` (the row
+/// constructors below differ only in these).
+template <auto field, typename Action>
+constexpr OptionRow MakeRow(ValueKind kind, std::string_view name, std::string_view help,
+                            Action f, std::string_view status) {
+    OptionRow r{{name, kind, help, status}};
+    r.*field = f;
+    return r;
+}
 constexpr OptionRow Toggle(std::string_view name, std::string_view help, ToggleField f,
                            std::string_view status = kYes) {
-    OptionRow r{{name, ValueKind::Toggle, help, status}};
-    r.toggle = f;
-    return r;
+    return MakeRow<&OptionRow::toggle>(ValueKind::Toggle, name, help, f, status);
 }
 constexpr OptionRow Int(std::string_view name, std::string_view help, IntField f,
                         std::string_view status = kYes) {
-    OptionRow r{{name, ValueKind::Int, help, status}};
-    r.integer = f;
-    return r;
+    return MakeRow<&OptionRow::integer>(ValueKind::Int, name, help, f, status);
 }
 constexpr OptionRow Real(std::string_view name, std::string_view help, RealField f,
                          std::string_view status = kYes) {
-    OptionRow r{{name, ValueKind::Real, help, status}};
-    r.real = f;
-    return r;
+    return MakeRow<&OptionRow::real>(ValueKind::Real, name, help, f, status);
 }
 constexpr OptionRow Color(std::string_view name, std::string_view help, RgbField f,
                           std::string_view status = kYes) {
-    OptionRow r{{name, ValueKind::Rgb, help, status}};
-    r.rgb = f;
-    return r;
+    return MakeRow<&OptionRow::rgb>(ValueKind::Rgb, name, help, f, status);
 }
 constexpr OptionRow Word(std::string_view name, std::string_view help, WordAction f,
                          std::string_view status = kYes) {
-    OptionRow r{{name, ValueKind::Word, help, status}};
-    r.word = f;
-    return r;
+    return MakeRow<&OptionRow::word>(ValueKind::Word, name, help, f, status);
 }
 constexpr OptionRow Attached(std::string_view name, std::string_view help, AttachedAction f) {
-    OptionRow r{{name, ValueKind::Attached, help, kYes}};
-    r.attached = f;
-    return r;
+    return MakeRow<&OptionRow::attached>(ValueKind::Attached, name, help, f, kYes);
 }
 constexpr OptionRow Custom(std::string_view name, std::string_view help, CustomAction f,
                            std::string_view status) {
-    OptionRow r{{name, ValueKind::Custom, help, status}};
-    r.custom = f;
-    return r;
+    return MakeRow<&OptionRow::custom>(ValueKind::Custom, name, help, f, status);
 }
 
 bool SetFormats(RtraceOptions& o, std::string_view rest) {

@@ -244,6 +244,17 @@ TEST(RtraceOptionsParse, TogglesFollowRadianceSuffixes) {
     EXPECT_EQ(ErrorOf({"-h++", "s.rad"}), "command line error at '-h++'");
 }
 
+/// -ah (lazyrad's record method): off by default, a toggle like Radiance's,
+/// a bad suffix is a one-line error, and -defaults does not list it.
+TEST(RtraceOptionsParse, HessianRecordsToggle) {
+    EXPECT_FALSE(ParseOptions({}).ambient.hessianRecords);
+    EXPECT_TRUE(ParseOptions({"-ah+"}).ambient.hessianRecords);
+    EXPECT_TRUE(ParseOptions({"-ah"}).ambient.hessianRecords);
+    EXPECT_FALSE(ParseOptions({"-ah+", "-ah-"}).ambient.hessianRecords);
+    EXPECT_EQ(ErrorOf({"-ahx", "s.rad"}), "command line error at '-ahx'");
+    EXPECT_EQ(FormatDefaults(ParseOptions({"-ah+"})).find("-ah"), std::string::npos);
+}
+
 TEST(RtraceOptionsParse, IrradianceModes) {
     EXPECT_EQ(ParseOptions({}).shading.irradiance, IrradianceMode::Off);
     EXPECT_EQ(ParseOptions({"-i"}).shading.irradiance, IrradianceMode::AtHit);
