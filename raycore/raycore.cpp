@@ -59,6 +59,39 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// TransmitsShadowRays for a material: `depth` counts the alternates followed,
+/// and a chain too long to follow is taken to transmit (the safe answer).
+bool MaterialTransmits(const Scene& scene, int material, int depth) {
+    if (material < 0) return false;  // black, as a void surface
+    if (depth > 8) return true;
+    const Material& m = scene.materials[static_cast<size_t>(material)];
+    switch (m.type) {
+        case MaterialType::Trans: {
+            // Only a trans without roughness passes shadow rays: its straight
+            // specular transmission (normal.c; the rough lobe is part of the
+            // trans surface's own direct light).
+            const auto& p = std::get<NormalParams>(m.params);
+            return p.roughness * p.roughness <= kFtiny && p.transmissivity != 0 &&
+                   p.transmittedSpecular != 0;
+        }
+        case MaterialType::Glass:
+        case MaterialType::Dielectric:
+        case MaterialType::Interface:
+        case MaterialType::Illum:
+            return true;
+        case MaterialType::Mirror:
+            // A shadow ray meeting its front is shaded with the alternate.
+            return MaterialTransmits(scene, m.alternate, depth + 1);
+        case MaterialType::Plastic:
+        case MaterialType::Metal:
+        case MaterialType::Light:
+        case MaterialType::Glow:
+        case MaterialType::Spotlight:
+            return false;
+    }
+    return true;
+}
+
 /// Float error allowance of Embree's distances, relative to the size of the
 /// coordinates involved (~84 float ulps: covers rounding of the origin, the
 /// direction and the triangle test with room to spare).
@@ -104,8 +137,9 @@ float RoundUp(double x) {
 
 /// True unless the segment from `org` to `end` = org + dir·tmax certainly
 /// misses `box` (slab test; NaNs and rounding err toward "meets").
-bool SegmentMeetsBox(const Vec3& org, const Vec3& end, const Vec3& dir, double tmax,
-                     const Bounds3& box) {
+[[gnu::always_inline]] inline bool SegmentMeetsBox(const Vec3& org, const Vec3& end,
+                                                   const Vec3& dir, double tmax,
+                                                   const Bounds3& box) {
     // The segment's own box first: no divisions, and enough for most misses.
     if (std::min(org.x, end.x) > box.hi.x || std::max(org.x, end.x) < box.lo.x ||
         std::min(org.y, end.y) > box.hi.y || std::max(org.y, end.y) < box.lo.y ||
@@ -207,6 +241,14 @@ std::vector<std::array<int, 4>> PairTriangles(const std::vector<std::array<int, 
 
 }  // namespace
 
+bool TransmitsShadowRays(const Scene& scene, const Surface& surface) {
+    for (int p : surface.patterns) {
+        if (scene.patterns[static_cast<size_t>(p)].kind == ModifierKind::Mixture) return true;
+    }
+    if (surface.material < 0) return !surface.patterns.empty();  // a hole, or black
+    return MaterialTransmits(scene, surface.material, 0);
+}
+
 struct RayCore::Impl {
     /// Per-kind user geometry: primID -> surface, and float bounds relative
     /// to the Embree scene's centre, precomputed so the bounds callback only copies.
@@ -214,7 +256,19 @@ struct RayCore::Impl {
         const std::vector<Surface>* surfaceList = nullptr;  // what `surfaces` index
         std::vector<int> surfaces;
         std::vector<RTCBounds> bounds;
+        std::vector<ConeFrame> coneFrames;  // per primitive, for the cone kind only
     };
+
+    /// The shape a user-geometry callback tests for primitive `primID`.
+    template <typename Shape>
+    static const Shape& ShapeOf(const UserKind& kind, unsigned primID) {
+        if constexpr (std::is_same_v<Shape, ConeFrame>) {
+            return kind.coneFrames[primID];
+        } else {
+            const int surface = kind.surfaces[primID];
+            return std::get<Shape>((*kind.surfaceList)[static_cast<size_t>(surface)].shape);
+        }
+    }
 
     /// A ray in the coordinates of the surfaces it is tested against: the
     /// caller's world ray, or that ray mapped into an instance's object space
@@ -242,6 +296,7 @@ struct RayCore::Impl {
         int bestInstance = -1;
         int bestTriangle = -1;
         Vec3 bestNormal;
+        int ignored = -1;  // Occluded only: a world surface whose exact test is skipped
         ExactRay world;  // the caller's ray as an ExactRay
         // The ray in the object space of the instance last asked for: callbacks
         // for one instance come in runs, so it is mapped once per run.
@@ -324,6 +379,8 @@ struct RayCore::Impl {
         /// scales with (user-geometry padding).
         double coordinateScale = 1;
         UserKind spheres, cones, rings;
+        /// Per surface: its primitive in `cones`, or -1.
+        std::vector<int> conePrimitive;
         const TriangleMesh* mesh = nullptr;
         std::vector<PolygonPlane> meshPlanes;  // per triangle
     };
@@ -336,6 +393,10 @@ struct RayCore::Impl {
         /// Box around every hit the layer can report (scene coordinates),
         /// widened by Embree's float error; empty when the layer holds nothing.
         Bounds3 bounds;
+        /// The user geometry of a layer that leaves some of it out (the
+        /// callbacks' user data); a layer with all of a kind uses the
+        /// Geometry's own. Never moved once the layer is built.
+        UserKind spheres, cones, rings;
     };
 
     struct PrototypeData {
@@ -365,24 +426,41 @@ struct RayCore::Impl {
 
     EmbreeErrors errors;
     RTCDevice device = nullptr;
-    Layer all;  // every surface
-    /// Every surface but the bounding polygons, for occlusion tests between
-    /// points inside the bounding planes (see raycore/hull.h). Built only when
-    /// the scene has bounding polygons and local light sources (whose shadow
-    /// rays are such tests); otherwise interior.rtc stays null.
-    Layer interior;
+    /// The layers an occlusion query chooses among, for one set of surfaces.
+    struct LayerSet {
+        Layer whole;  // every surface of the set
+        /// Without the bounding polygons, for occlusion tests between points
+        /// inside the bounding planes (see raycore/hull.h). Built only when
+        /// the scene has bounding polygons and local light sources (whose
+        /// shadow rays are such tests); otherwise interior.rtc stays null.
+        Layer interior;
+        /// The interior without the polygons in the plane of the light-source
+        /// polygons, for occlusion tests that also stay on one side of that
+        /// plane (see raycore/source_plane.h). Built with the interior when
+        /// the scene has such a plane; otherwise besideSources.rtc stays null.
+        Layer besideSources;
+    };
+    /// All surfaces: `allLayers.whole` answers Intersect and, with the
+    /// others, Occluded(All) when nothing transmits; when something does,
+    /// only `whole` is built.
+    LayerSet allLayers;
+    /// The surfaces and instances that stop shadow rays (Occluders::Opaque),
+    /// built only when something transmits (`transmittingLayer.rtc` not
+    /// null); otherwise `allLayers` is that set.
+    LayerSet opaqueLayers;
+    /// The surfaces that transmit shadow rays and every instance with one
+    /// (Occluders::Transmitting); rtc stays null when there are none.
+    Layer transmittingLayer;
     BoundingPolygons bounding;
-    /// The interior without the polygons in the plane of the light-source
-    /// polygons, for occlusion tests that also stay on one side of that plane
-    /// (see raycore/source_plane.h). Built with the interior when the scene
-    /// has such a plane; otherwise besideSources.rtc stays null.
-    Layer besideSources;
     std::optional<SourcePlane> sourcePlane;
 
     ~Impl() {
-        if (besideSources.rtc) rtcReleaseScene(besideSources.rtc);
-        if (interior.rtc) rtcReleaseScene(interior.rtc);
-        if (all.rtc) rtcReleaseScene(all.rtc);
+        for (LayerSet* set : {&opaqueLayers, &allLayers}) {
+            for (Layer* layer : {&set->besideSources, &set->interior, &set->whole}) {
+                if (layer->rtc) rtcReleaseScene(layer->rtc);
+            }
+        }
+        if (transmittingLayer.rtc) rtcReleaseScene(transmittingLayer.rtc);
         for (PrototypeData& p : prototypes) {
             if (p.layer.rtc) rtcReleaseScene(p.layer.rtc);
         }
@@ -430,12 +508,12 @@ struct RayCore::Impl {
                   const TriangleMesh* mesh);
     void BuildPrototype(PrototypeData& data, const Prototype& prototype);
     /// An Embree scene over `geometry`'s surfaces except `leftOut`, and, for
-    /// the world, every instance.
+    /// the world (`instanceLeftOut` not null), every instance not left out.
     void BuildLayer(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut,
-                    bool withInstances);
+                    const std::vector<bool>* instanceLeftOut);
     void BuildPolygons(Layer& layer, const Geometry& geometry, const std::vector<bool>& leftOut);
     void BuildMesh(Layer& layer, Geometry& geometry);
-    void BuildInstances(Layer& layer);
+    void BuildInstances(Layer& layer, const std::vector<bool>& leftOut);
     /// Float boxes of user-geometry surfaces, relative to the centre.
     std::vector<RTCBounds> UserBoundsOf(const Geometry& geometry, const std::vector<int>& surfaces) const;
     void BuildUserKind(UserKind& kind, const Geometry& geometry, Layer& layer, unsigned id,
@@ -448,11 +526,13 @@ struct RayCore::Impl {
                                                   RTCRay& ray) const;
 
     /// How far a ray must be advanced before Embree sees it (0 near the
-    /// scene), or nullopt when it cannot reach the scene at all.
-    [[gnu::always_inline]] inline std::optional<double> DistanceToScene(const Vec3& org,
-                                                                        const Vec3& dir) const;
+    /// scene), or kUnreachable when it cannot reach the scene at all. A
+    /// plain double, not std::optional: GCC builds an optional<double> in
+    /// memory and reloads it whole, a store-forwarding stall on every query.
+    [[gnu::always_inline]] inline double DistanceToScene(const Vec3& org, const Vec3& dir) const;
     /// DistanceToScene for an origin far from the scene.
-    std::optional<double> DistanceFromAfar(const Vec3& org, const Vec3& dir) const;
+    double DistanceFromAfar(const Vec3& org, const Vec3& dir) const;
+    static constexpr double kUnreachable = -1;
     /// Shading normal and (u, v) of a hit on a mesh triangle.
     void SetMeshAttributes(Hit& hit) const;
 
@@ -471,7 +551,10 @@ struct RayCore::Impl {
               std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
     static void UserOccluded(const RTCOccludedFunctionNArguments* args);
     template <bool kInstanced>
-    void BuildUserKinds(Geometry& geometry, Layer& layer);
+    void BuildUserKinds(Geometry& geometry, Layer& layer, const std::vector<bool>& leftOut);
+    /// `all`'s primitives whose surfaces are not left out: `all` itself if
+    /// that is every one, else a copy of them in `own`.
+    static UserKind& ChooseUserKind(UserKind& all, UserKind& own, const std::vector<bool>& leftOut);
 
     /// Whether polygon plane p is a valid candidate for ray r: exact t =
     /// num/denom in (r.tmin, r.tmax). Compared without dividing, because a
@@ -518,9 +601,10 @@ void RayCore::Impl::PolygonOccludedFilter(const RTCFilterFunctionNArguments* arg
     const auto& q = *reinterpret_cast<const Query*>(args->context);
     const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
     const auto& quads = *static_cast<const std::vector<PolygonPlane>*>(args->geometryUserPtr);
+    const PolygonPlane& plane = quads[hit->primID];
     double num, denom;
-    if (!PlaneCandidate(q.RayIn<kInstanced>(args->context->instID[0]), quads[hit->primID], num,
-                        denom)) {
+    if ((!kInstanced && plane.surface == q.ignored) ||
+        !PlaneCandidate(q.RayIn<kInstanced>(args->context->instID[0]), plane, num, denom)) {
         args->valid[0] = 0;
     }
 }
@@ -538,7 +622,7 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
     auto& q = *reinterpret_cast<Query*>(args->context);
     const int surface = kind->surfaces[args->primID];
-    const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
+    const Shape& shape = ShapeOf<Shape>(*kind, args->primID);
     const unsigned instID = args->context->instID[0];
     const ExactRay& r = q.RayIn<kInstanced>(instID);
     const auto h = Fn(shape, r.org, r.dir, r.tmin);
@@ -565,8 +649,8 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     const auto* kind = static_cast<const UserKind*>(args->geometryUserPtr);
     const auto& q = *reinterpret_cast<const Query*>(args->context);
-    const int surface = kind->surfaces[args->primID];
-    const auto& shape = std::get<Shape>((*kind->surfaceList)[static_cast<size_t>(surface)].shape);
+    if (!kInstanced && kind->surfaces[args->primID] == q.ignored) return;
+    const Shape& shape = ShapeOf<Shape>(*kind, args->primID);
     const ExactRay& r = q.RayIn<kInstanced>(args->context->instID[0]);
     const auto h = Fn(shape, r.org, r.dir, r.tmin);
     if (h && h->t < r.tmax) {
@@ -582,6 +666,7 @@ void RayCore::Impl::Classify(Geometry& geometry, const std::vector<Surface>& sur
                              const TriangleMesh* mesh) {
     geometry.surfaces = &surfaces;
     geometry.spheres.surfaceList = geometry.cones.surfaceList = geometry.rings.surfaceList = &surfaces;
+    geometry.conePrimitive.assign(surfaces.size(), -1);
     for (size_t i = 0; i < surfaces.size(); ++i) {
         const Surface& surface = surfaces[i];
         const int index = static_cast<int>(i);
@@ -600,7 +685,9 @@ void RayCore::Impl::Classify(Geometry& geometry, const std::vector<Surface>& sur
             case SurfaceType::Tube:
                 RT_CHECK(std::get<Cone>(surface.shape).inward ==
                          (surface.type == SurfaceType::Cup || surface.type == SurfaceType::Tube));
+                geometry.conePrimitive[i] = static_cast<int>(geometry.cones.surfaces.size());
                 geometry.cones.surfaces.push_back(index);
+                geometry.cones.coneFrames.push_back(MakeConeFrame(std::get<Cone>(surface.shape)));
                 break;
             case SurfaceType::Ring:
                 geometry.rings.surfaces.push_back(index);
@@ -690,7 +777,47 @@ void RayCore::Impl::Build(const Scene& s) {
         BuildPrototype(data, prototype);
     }
 
-    BuildLayer(all, world, std::vector<bool>(s.surfaces.size(), false), true);
+    // Which surfaces and instances stop shadow rays (Occluders::Opaque) and
+    // which may let them pass (Occluders::Transmitting); an instance goes
+    // wholly to one side.
+    std::vector<bool> transmits(s.surfaces.size(), false);
+    for (size_t i = 0; i < s.surfaces.size(); ++i) {
+        transmits[i] = TransmitsShadowRays(s, s.surfaces[i]);
+    }
+    std::vector<bool> instanceTransmits(s.instances.size(), false);
+    for (size_t i = 0; i < s.instances.size(); ++i) {
+        const Instance& in = s.instances[i];
+        if (in.override) {
+            instanceTransmits[i] = TransmitsShadowRays(s, *in.override);
+        } else {
+            const auto& inner = s.prototypes[static_cast<size_t>(in.prototype)].surfaces;
+            instanceTransmits[i] = std::any_of(inner.begin(), inner.end(), [&](const Surface& f) {
+                return TransmitsShadowRays(s, f);
+            });
+        }
+    }
+    const bool anyTransmits =
+        std::find(transmits.begin(), transmits.end(), true) != transmits.end() ||
+        std::find(instanceTransmits.begin(), instanceTransmits.end(), true) !=
+            instanceTransmits.end();
+    const std::vector<bool> none(s.surfaces.size(), false),
+        noInstance(s.instances.size(), false);
+    // `leftOut` with the transmitting (opaque) surfaces left out as well.
+    const auto without = [](std::vector<bool> leftOut, const std::vector<bool>& more) {
+        for (size_t i = 0; i < leftOut.size(); ++i) leftOut[i] = leftOut[i] || more[i];
+        return leftOut;
+    };
+    const auto negated = [](std::vector<bool> v) {
+        v.flip();
+        return v;
+    };
+
+    BuildLayer(allLayers.whole, world, none, &noInstance);
+    if (anyTransmits) {
+        BuildLayer(opaqueLayers.whole, world, transmits, &instanceTransmits);
+        const std::vector<bool> opaqueInstances = negated(instanceTransmits);
+        BuildLayer(transmittingLayer, world, negated(transmits), &opaqueInstances);
+    }
 
     const bool localSources =
         std::any_of(s.surfaces.begin(), s.surfaces.end(), [&](const Surface& f) {
@@ -704,19 +831,31 @@ void RayCore::Impl::Build(const Scene& s) {
     if (bounding.surfaces.empty()) return;
     std::vector<bool> leftOut(s.surfaces.size(), false);
     for (int i : bounding.surfaces) leftOut[static_cast<size_t>(i)] = true;
-    BuildLayer(interior, world, leftOut, true);
+    // With something that transmits, Occluded(All) asks the two sets in
+    // turn, so the shortcut layers of all surfaces are not needed.
+    if (anyTransmits) {
+        BuildLayer(opaqueLayers.interior, world, without(leftOut, transmits), &instanceTransmits);
+    } else {
+        BuildLayer(allLayers.interior, world, leftOut, &noInstance);
+    }
 
     sourcePlane = FindSourcePlane(s, leftOut, coordinateScale);
     if (!sourcePlane) return;
     for (int i : sourcePlane->surfaces) leftOut[static_cast<size_t>(i)] = true;
-    BuildLayer(besideSources, world, leftOut, true);
+    if (anyTransmits) {
+        BuildLayer(opaqueLayers.besideSources, world, without(leftOut, transmits),
+                   &instanceTransmits);
+    } else {
+        BuildLayer(allLayers.besideSources, world, leftOut, &noInstance);
+    }
 }
 
 void RayCore::Impl::BuildPrototype(PrototypeData& data, const Prototype& prototype) {
     data.priority.reserve(prototype.surfaces.size());
     for (const Surface& surface : prototype.surfaces) data.priority.push_back(PriorityOfSurface(surface));
     Classify(data.geometry, prototype.surfaces, prototype.mesh.get());
-    BuildLayer(data.layer, data.geometry, std::vector<bool>(prototype.surfaces.size(), false), false);
+    BuildLayer(data.layer, data.geometry, std::vector<bool>(prototype.surfaces.size(), false),
+               nullptr);
 }
 
 void RayCore::Impl::AttachGeometry(Layer& layer, RTCGeometry geometry, unsigned id) {
@@ -726,7 +865,7 @@ void RayCore::Impl::AttachGeometry(Layer& layer, RTCGeometry geometry, unsigned 
 }
 
 void RayCore::Impl::BuildLayer(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut,
-                               bool withInstances) {
+                               const std::vector<bool>* instanceLeftOut) {
     layer.rtc = rtcNewScene(device);
     Check("rtcNewScene");
     // ROBUST: watertight triangle tests, so rays through shared edges and
@@ -753,28 +892,42 @@ void RayCore::Impl::BuildLayer(Layer& layer, Geometry& geometry, const std::vect
     }
     BuildPolygons(layer, geometry, leftOut);
     if (&geometry == &world) {
-        BuildUserKinds<false>(geometry, layer);
+        BuildUserKinds<false>(geometry, layer, leftOut);
     } else {
-        BuildUserKinds<true>(geometry, layer);
+        BuildUserKinds<true>(geometry, layer, leftOut);
     }
     if (geometry.mesh) BuildMesh(layer, geometry);
-    if (withInstances) BuildInstances(layer);
+    if (instanceLeftOut) BuildInstances(layer, *instanceLeftOut);
 
     rtcCommitScene(layer.rtc);
     Check("rtcCommitScene");
 }
 
 template <bool kInstanced>
-void RayCore::Impl::BuildUserKinds(Geometry& geometry, Layer& layer) {
-    BuildUserKind(geometry.spheres, geometry, layer, kSphereGeometry,
-                  &UserIntersect<kInstanced, Sphere, IntersectSphere>,
+void RayCore::Impl::BuildUserKinds(Geometry& geometry, Layer& layer,
+                                   const std::vector<bool>& leftOut) {
+    BuildUserKind(ChooseUserKind(geometry.spheres, layer.spheres, leftOut), geometry, layer,
+                  kSphereGeometry, &UserIntersect<kInstanced, Sphere, IntersectSphere>,
                   &UserOccluded<kInstanced, Sphere, IntersectSphere>);
-    BuildUserKind(geometry.cones, geometry, layer, kConeGeometry,
-                  &UserIntersect<kInstanced, Cone, IntersectCone>,
-                  &UserOccluded<kInstanced, Cone, IntersectCone>);
-    BuildUserKind(geometry.rings, geometry, layer, kRingGeometry,
-                  &UserIntersect<kInstanced, Ring, IntersectRing>,
+    BuildUserKind(ChooseUserKind(geometry.cones, layer.cones, leftOut), geometry, layer,
+                  kConeGeometry, &UserIntersect<kInstanced, ConeFrame, IntersectCone>,
+                  &UserOccluded<kInstanced, ConeFrame, IntersectCone>);
+    BuildUserKind(ChooseUserKind(geometry.rings, layer.rings, leftOut), geometry, layer,
+                  kRingGeometry, &UserIntersect<kInstanced, Ring, IntersectRing>,
                   &UserOccluded<kInstanced, Ring, IntersectRing>);
+}
+
+RayCore::Impl::UserKind& RayCore::Impl::ChooseUserKind(UserKind& all, UserKind& own,
+                                                       const std::vector<bool>& leftOut) {
+    const auto out = [&](int surface) { return leftOut[static_cast<size_t>(surface)]; };
+    if (std::none_of(all.surfaces.begin(), all.surfaces.end(), out)) return all;
+    own.surfaceList = all.surfaceList;
+    for (size_t p = 0; p < all.surfaces.size(); ++p) {
+        if (out(all.surfaces[p])) continue;
+        own.surfaces.push_back(all.surfaces[p]);
+        if (!all.coneFrames.empty()) own.coneFrames.push_back(all.coneFrames[p]);
+    }
+    return own;
 }
 
 void RayCore::Impl::BuildPolygons(Layer& layer, const Geometry& geometry,
@@ -859,8 +1012,9 @@ void RayCore::Impl::BuildMesh(Layer& layer, Geometry& geometry) {
     Check("triangle mesh");
 }
 
-void RayCore::Impl::BuildInstances(Layer& layer) {
+void RayCore::Impl::BuildInstances(Layer& layer, const std::vector<bool>& leftOut) {
     for (size_t i = 0; i < instances.size(); ++i) {
+        if (leftOut[i]) continue;
         const InstanceData& in = instances[i];
         PrototypeData& proto = prototypes[static_cast<size_t>(in.prototype)];
         if (proto.layer.bounds.Empty()) continue;  // nothing to hit
@@ -980,23 +1134,23 @@ RayCore::RayCore(const Scene& scene) : impl_(std::make_unique<Impl>()) { impl_->
 
 RayCore::~RayCore() = default;
 
-std::optional<double> RayCore::Impl::DistanceToScene(const Vec3& org, const Vec3& dir) const {
+double RayCore::Impl::DistanceToScene(const Vec3& org, const Vec3& dir) const {
     // One finiteness test each: a sum is NaN or infinite if any term is.
-    if (!std::isfinite(dir.x + dir.y + dir.z)) return std::nullopt;
+    if (!std::isfinite(dir.x + dir.y + dir.z)) return kUnreachable;
     // Generous: the geometry lies within 0.87·extent of the centre.
     if (LengthSquared(org - centre) <= 16.0 * extent * extent) return 0.0;
     return DistanceFromAfar(org, dir);
 }
 
-std::optional<double> RayCore::Impl::DistanceFromAfar(const Vec3& org, const Vec3& dir) const {
+double RayCore::Impl::DistanceFromAfar(const Vec3& org, const Vec3& dir) const {
     const Vec3 rel = org - centre;
     const double radius = extent;
     const double dist2 = LengthSquared(rel);
-    if (!std::isfinite(dist2)) return std::nullopt;
+    if (!std::isfinite(dist2)) return kUnreachable;
     // Closest approach from the perpendicular part (no b² - c cancellation).
     const double b = Dot(rel, dir);
     const double perp2 = LengthSquared(rel - dir * b);
-    if (perp2 > radius * radius || b > 0) return std::nullopt;  // misses the scene
+    if (perp2 > radius * radius || b > 0) return kUnreachable;  // misses the scene
     const double entry = -b - std::sqrt(radius * radius - perp2);
     // The advanced origin is only known to an ulp of the original distance:
     // stop that far (and a scene radius) short of the scene.
@@ -1004,7 +1158,7 @@ std::optional<double> RayCore::Impl::DistanceFromAfar(const Vec3& org, const Vec
     const double advance = std::max(0.0, entry - margin);
     // Beyond ~1e15 scene sizes the origin cannot be placed near the scene in
     // double at all; such a ray cannot meaningfully hit anything.
-    if (MaxAbs(org + dir * advance - centre) > 1e15 * radius) return std::nullopt;
+    if (MaxAbs(org + dir * advance - centre) > 1e15 * radius) return kUnreachable;
     return advance;
 }
 
@@ -1012,22 +1166,22 @@ std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double
     // A ray from far outside the scene is first advanced, in double, to near
     // the scene: Embree's float rays lose precision with distance and must
     // stay within about 1.8e19 of the origin.
-    const auto advance = impl_->DistanceToScene(orgIn, dir);
-    if (!advance) return std::nullopt;
-    if (tmaxIn > 0 && tmaxIn <= *advance) return std::nullopt;
-    const Vec3 org = orgIn + dir * *advance;
-    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
+    const double advance = impl_->DistanceToScene(orgIn, dir);
+    if (advance < 0) return std::nullopt;
+    if (tmaxIn > 0 && tmaxIn <= advance) return std::nullopt;
+    const Vec3 org = orgIn + dir * advance;
+    const double tmax = tmaxIn > 0 ? tmaxIn - advance : 0.0;
     RTCRayHit rayhit;
     Impl::Query q = impl_->MakeQuery(org, dir, tmax, rayhit.ray);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->all.rtc, &q.rtc, &rayhit);
+    rtcIntersect1(impl_->allLayers.whole.rtc, &q.rtc, &rayhit);
     // The answer is the Query's best, not rayhit.hit: the callbacks may have
     // accepted later coincident candidates that lost the priority rule.
     if (q.best < 0) return std::nullopt;
     Hit hit;
-    hit.t = q.bestT + *advance;
+    hit.t = q.bestT + advance;
     hit.point = org + dir * q.bestT;
     hit.surface = q.best;
     hit.instance = q.bestInstance;
@@ -1074,8 +1228,12 @@ void RayCore::Impl::SetMeshAttributes(Hit& hit) const {
 
 std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const {
     RT_CHECK(surface >= 0 && static_cast<size_t>(surface) < impl_->scene->surfaces.size());
-    const auto h = IntersectShape(impl_->scene->surfaces[static_cast<size_t>(surface)], org, dir,
-                                  impl_->tolerance);
+    const Impl::Geometry& world = impl_->world;
+    const int cone = world.conePrimitive[static_cast<size_t>(surface)];
+    const auto h = cone >= 0 ? IntersectCone(world.cones.coneFrames[static_cast<size_t>(cone)], org,
+                                             dir, impl_->tolerance)
+                             : IntersectShape(impl_->scene->surfaces[static_cast<size_t>(surface)],
+                                              org, dir, impl_->tolerance);
     if (!h) return std::nullopt;
     Hit hit;
     hit.t = h->t;
@@ -1085,30 +1243,69 @@ std::optional<Hit> RayCore::IntersectSurface(int surface, const Vec3& org, const
     return hit;
 }
 
-bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const {
-    const auto advance = impl_->DistanceToScene(orgIn, dir);
-    if (!advance) return false;
-    if (tmaxIn > 0 && tmaxIn <= *advance) return false;
-    // Between two points inside every bounding plane the bounding polygons
-    // cannot be in the way (raycore/hull.h), nor, if the points are on one
-    // side of it, the polygons in the light sources' plane
-    // (raycore/source_plane.h).
-    const Impl::Layer* layer = &impl_->all;
-    if (impl_->interior.rtc && tmaxIn > 0) {
+std::optional<RayCore::SurfaceSide> RayCore::IntersectSurfaceSide(int surface, const Vec3& org,
+                                                                  const Vec3& dir) const {
+    RT_CHECK(surface >= 0 && static_cast<size_t>(surface) < impl_->scene->surfaces.size());
+    const Impl::Geometry& world = impl_->world;
+    const int cone = world.conePrimitive[static_cast<size_t>(surface)];
+    const auto h =
+        cone >= 0
+            ? IntersectConeSide(world.cones.coneFrames[static_cast<size_t>(cone)], org, dir,
+                                impl_->tolerance)
+            : IntersectShapeSide(impl_->scene->surfaces[static_cast<size_t>(surface)], org, dir,
+                                 impl_->tolerance);
+    if (!h) return std::nullopt;
+    return SurfaceSide{h->t, h->back};
+}
+
+bool RayCore::HasTransmitting() const { return impl_->transmittingLayer.rtc != nullptr; }
+
+bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn, Occluders which,
+                       int ignored) const {
+    if (impl_->transmittingLayer.rtc && which == Occluders::All) {
+        return Occluded(orgIn, dir, tmaxIn, Occluders::Transmitting, ignored) ||
+               Occluded(orgIn, dir, tmaxIn, Occluders::Opaque, ignored);
+    }
+    if (which == Occluders::Transmitting && !impl_->transmittingLayer.rtc) return false;
+    const double advance = impl_->DistanceToScene(orgIn, dir);
+    if (advance < 0) return false;
+    if (tmaxIn > 0 && tmaxIn <= advance) return false;
+    const Impl::LayerSet& set = which == Occluders::Opaque && impl_->transmittingLayer.rtc
+                                    ? impl_->opaqueLayers
+                                    : impl_->allLayers;
+    const Impl::Layer* layer = &set.whole;
+    if (which == Occluders::Transmitting) {
+        layer = &impl_->transmittingLayer;
+        // Few surfaces, usually away from the segment: no need to ask Embree.
+        // Without tmax, the segment to beyond the geometry (which lies within
+        // 0.87 extents of the centre) stands for the ray.
+        if (advance == 0) {
+            const double reach =
+                tmaxIn > 0 ? tmaxIn : Length(orgIn - impl_->centre) + impl_->extent;
+            if (!SegmentMeetsBox(orgIn, orgIn + dir * reach, dir, reach, layer->bounds)) {
+                return false;
+            }
+        }
+    } else if (set.interior.rtc && tmaxIn > 0) {
+        // Between two points inside every bounding plane the bounding
+        // polygons cannot be in the way (raycore/hull.h), nor, if the points
+        // are on one side of it, the polygons in the light sources' plane
+        // (raycore/source_plane.h).
         const Vec3 end = orgIn + dir * tmaxIn;
         if (impl_->bounding.Inside(orgIn) && impl_->bounding.Inside(end)) {
-            layer = impl_->besideSources.rtc && impl_->sourcePlane->Clears(orgIn, end)
-                        ? &impl_->besideSources
-                        : &impl_->interior;
+            layer = set.besideSources.rtc && impl_->sourcePlane->Clears(orgIn, end)
+                        ? &set.besideSources
+                        : &set.interior;
             // Most shadow rays in a room pass by its furniture: no need to
             // ask Embree.
             if (!SegmentMeetsBox(orgIn, end, dir, tmaxIn, layer->bounds)) return false;
         }
     }
-    const Vec3 org = orgIn + dir * *advance;
-    const double tmax = tmaxIn > 0 ? tmaxIn - *advance : 0.0;
+    const Vec3 org = orgIn + dir * advance;
+    const double tmax = tmaxIn > 0 ? tmaxIn - advance : 0.0;
     RTCRay ray;
     Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
+    q.ignored = ignored;
     rtcOccluded1(layer->rtc, &q.rtc, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }

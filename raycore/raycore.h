@@ -47,6 +47,25 @@ struct Hit {
 /// For test failure messages.
 std::ostream& operator<<(std::ostream& os, const Hit& hit);
 
+/// True if a shadow ray that meets `surface` (one of `scene`'s surfaces, of
+/// its prototypes' or an instance's override) may go on past it as shading/
+/// follows shadow rays, whichever side it meets: its material is glass,
+/// dielectric, interface, an illum (passed, or shown as its alternate) or a
+/// trans with a specular transmission and no roughness, it is a mirror whose
+/// alternate material transmits, it has no material but modifiers (a hole),
+/// or a mixture is among its modifiers. A shadow ray that meets any other
+/// surface returns black (back faces visible).
+bool TransmitsShadowRays(const Scene& scene, const Surface& surface);
+
+/// The surfaces an occlusion query looks at. shading/ follows a shadow ray
+/// through the surfaces when a Transmitting one is in its way; otherwise an
+/// Opaque one blocks it, and with neither it reaches its source.
+enum class Occluders {
+    All,
+    Opaque,        // surfaces that do not transmit shadow rays, and instances with none
+    Transmitting,  // surfaces that do, and every instance that has one
+};
+
 class RayCore {
 public:
     /// Builds acceleration structures for the scene's surfaces (only the kinds
@@ -67,8 +86,27 @@ public:
     /// Intersection with one of Scene::surfaces only (source rays aim at their source).
     std::optional<Hit> IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const;
 
-    /// True if anything lies in (tol, tmax) along the ray. Thread-safe.
-    bool Occluded(const Vec3& org, const Vec3& dir, double tmax) const;
+    /// IntersectSurface's distance, and whether the ray meets the surface's
+    /// back (-Dot(dir, hit.normal) < 0, bit for bit), without the normal's
+    /// cost when the side is certain without it.
+    struct SurfaceSide {
+        double t = 0;
+        bool back = false;
+    };
+    std::optional<SurfaceSide> IntersectSurfaceSide(int surface, const Vec3& org,
+                                                    const Vec3& dir) const;
+
+    /// True if any of the surfaces `which` selects lies in (tol, tmax) along
+    /// the ray (tmax <= 0: no limit). `ignored` (one of Scene::surfaces, or
+    /// -1) is a surface the caller knows is not there, such as the light
+    /// source a shadow ray stops short of: its test is skipped, which saves
+    /// time and changes no answer. Thread-safe.
+    bool Occluded(const Vec3& org, const Vec3& dir, double tmax,
+                  Occluders which = Occluders::All, int ignored = -1) const;
+
+    /// True if some surface or instance transmits shadow rays
+    /// (TransmitsShadowRays); otherwise Occluders::Transmitting selects nothing.
+    bool HasTransmitting() const;
 
 private:
     struct Impl;

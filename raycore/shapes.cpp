@@ -39,8 +39,17 @@ double Cross2(double ax, double ay, double bx, double by) { return ax * by - ay 
 
 }  // namespace
 
-std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir,
-                                        double tmin) {
+namespace {
+
+/// The nearest root of a sphere beyond tmin, and f = org − centre.
+struct SphereRoot {
+    double t;
+    Vec3 f;
+};
+[[gnu::always_inline]] inline std::optional<SphereRoot> FindSphereRoot(const Sphere& sphere,
+                                                                       const Vec3& org,
+                                                                       const Vec3& dir,
+                                                                       double tmin) {
     // Discriminant as r² − |f⊥|² (Ray Tracing Gems ch. 7): stays accurate when
     // the origin is far from a small sphere, where b² − c cancels.
     const Vec3 f = org - sphere.center;
@@ -52,24 +61,76 @@ std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, c
     double roots[2];
     const int n = StableRoots(1.0, b, LengthSquared(f) - r2, disc, roots);
     for (int i = 0; i < n; ++i) {
-        const double t = roots[i];
-        if (t <= tmin) continue;
-        Vec3 normal = Normalize(f + dir * t);
-        if (sphere.inward) normal = -normal;
-        return ShapeHit{t, normal};
+        if (roots[i] > tmin) return SphereRoot{roots[i], f};
     }
     return std::nullopt;
 }
 
+/// True if `v`, parallel to the unit normal a shape would compute but not
+/// normalised (and, for a cone, without its divisions), gives the sign of
+/// Dot(dir, normal) for certain: the few roundings between the two change
+/// the dot product by ~1e-15 of |v|, far below this margin.
+bool SideIsCertain(const Vec3& v, double dot) {
+    return std::fabs(dot) > 1e-12 * (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z));
+}
+
+}  // namespace
+
+std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir,
+                                        double tmin) {
+    const auto root = FindSphereRoot(sphere, org, dir, tmin);
+    if (!root) return std::nullopt;
+    Vec3 normal = Normalize(root->f + dir * root->t);
+    if (sphere.inward) normal = -normal;
+    return ShapeHit{root->t, normal};
+}
+
+std::optional<ShapeSide> IntersectSphereSide(const Sphere& sphere, const Vec3& org,
+                                             const Vec3& dir, double tmin) {
+    const auto root = FindSphereRoot(sphere, org, dir, tmin);
+    if (!root) return std::nullopt;
+    Vec3 v = root->f + dir * root->t;
+    if (sphere.inward) v = -v;
+    const double dot = Dot(dir, v);
+    if (SideIsCertain(v, dot)) return ShapeSide{root->t, dot > 0};
+    Vec3 normal = Normalize(v);
+    return ShapeSide{root->t, -Dot(dir, normal) < 0.0};
+}
+
+ConeFrame MakeConeFrame(const Cone& cone) {
+    ConeFrame f;
+    const Vec3 axis = cone.p1 - cone.p0;
+    f.p0 = cone.p0;
+    f.length = Length(axis);
+    f.axis = axis / f.length;
+    f.slope = (cone.r1 - cone.r0) / f.length;
+    f.r0 = cone.r0;
+    f.inward = cone.inward;
+    return f;
+}
+
 std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir,
                                       double tmin) {
+    return IntersectCone(MakeConeFrame(cone), org, dir, tmin);
+}
+
+namespace {
+
+/// The nearest root of a cone's lateral surface beyond tmin and between its
+/// end planes, and the part of (hit point − p0) perpendicular to the axis.
+struct ConeRoot {
+    double t;
+    Vec3 radial;
+};
+[[gnu::always_inline]] inline std::optional<ConeRoot> FindConeRoot(const ConeFrame& cone,
+                                                                   const Vec3& org,
+                                                                   const Vec3& dir, double tmin) {
     // Frame: a = unit axis from p0, h = height along it, radius(h) = r0 + k·h.
     // With o⊥, d⊥ the parts of (org − p0) and dir perpendicular to a, the
     // lateral surface is |o⊥ + t·d⊥|² = (r0 + k·(ho + t·hd))².
-    const Vec3 axis = cone.p1 - cone.p0;
-    const double length = Length(axis);
-    const Vec3 a = axis / length;
-    const double k = (cone.r1 - cone.r0) / length;
+    const Vec3& a = cone.axis;
+    const double length = cone.length;
+    const double k = cone.slope;
     const Vec3 o = org - cone.p0;
     const double ho = Dot(o, a);
     const double hd = Dot(dir, a);
@@ -91,16 +152,44 @@ std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const V
         if (t <= tmin) continue;
         const double h = ho + t * hd;
         if (h < 0 || h > length) continue;  // outside the end planes
-        const Vec3 radial = op + dp * t;
-        const double radialLength = Length(radial);
-        // Outward normal of the slanted side: radial unit tilted by −k·a
-        // (Radiance o_cone.c: (al·radial − (r1−r0)·a)/slant length).
-        Vec3 normal = radialLength > 0 ? Normalize(radial / radialLength - a * k)
-                                       : a * (k > 0 ? -1.0 : 1.0);  // at the apex
-        if (cone.inward) normal = -normal;
-        return ShapeHit{t, normal};
+        return ConeRoot{t, op + dp * t};
     }
     return std::nullopt;
+}
+
+/// IntersectCone's normal at a root.
+Vec3 ConeNormal(const ConeFrame& cone, const Vec3& radial) {
+    const Vec3& a = cone.axis;
+    const double k = cone.slope;
+    const double radialLength = Length(radial);
+    // Outward normal of the slanted side: radial unit tilted by −k·a
+    // (Radiance o_cone.c: (al·radial − (r1−r0)·a)/slant length).
+    Vec3 normal = radialLength > 0 ? Normalize(radial / radialLength - a * k)
+                                   : a * (k > 0 ? -1.0 : 1.0);  // at the apex
+    if (cone.inward) normal = -normal;
+    return normal;
+}
+
+}  // namespace
+
+std::optional<ShapeHit> IntersectCone(const ConeFrame& cone, const Vec3& org, const Vec3& dir,
+                                      double tmin) {
+    const auto root = FindConeRoot(cone, org, dir, tmin);
+    if (!root) return std::nullopt;
+    return ShapeHit{root->t, ConeNormal(cone, root->radial)};
+}
+
+std::optional<ShapeSide> IntersectConeSide(const ConeFrame& cone, const Vec3& org,
+                                           const Vec3& dir, double tmin) {
+    const auto root = FindConeRoot(cone, org, dir, tmin);
+    if (!root) return std::nullopt;
+    // radial − a·k·|radial| is the normal times |radial|; a cylinder's is radial.
+    const Vec3& radial = root->radial;
+    Vec3 v = cone.slope == 0 ? radial : radial - cone.axis * (cone.slope * Length(radial));
+    if (cone.inward) v = -v;
+    const double dot = Dot(dir, v);
+    if (SideIsCertain(v, dot)) return ShapeSide{root->t, dot > 0};
+    return ShapeSide{root->t, -Dot(dir, ConeNormal(cone, radial)) < 0.0};
 }
 
 std::optional<ShapeHit> IntersectRing(const Ring& ring, const Vec3& org, const Vec3& dir,
@@ -310,6 +399,25 @@ Bounds3 ShapeBounds(const Surface& surface) {
             break;  // not geometry of their own
     }
     return b;
+}
+
+std::optional<ShapeSide> IntersectShapeSide(const Surface& surface, const Vec3& org,
+                                            const Vec3& dir, double tmin) {
+    switch (surface.type) {
+        case SurfaceType::Sphere:
+        case SurfaceType::Bubble:
+            return IntersectSphereSide(std::get<Sphere>(surface.shape), org, dir, tmin);
+        case SurfaceType::Cone:
+        case SurfaceType::Cup:
+        case SurfaceType::Cylinder:
+        case SurfaceType::Tube:
+            return IntersectConeSide(MakeConeFrame(std::get<Cone>(surface.shape)), org, dir, tmin);
+        default: {
+            const auto hit = IntersectShape(surface, org, dir, tmin);
+            if (!hit) return std::nullopt;
+            return ShapeSide{hit->t, -Dot(dir, hit->normal) < 0.0};
+        }
+    }
 }
 
 std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir,

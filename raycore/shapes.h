@@ -26,14 +26,45 @@ struct ShapeHit {
     Vec3 normal;   // unit, as the surface defines it (inward for bubble/cup/tube), not flipped
 };
 
+/// A hit without its normal: the distance, and whether the ray meets the
+/// surface's back, i.e. -Dot(dir, normal) < 0 for the ShapeHit normal, bit for
+/// bit. The *Side intersectors skip the normal's square roots and divisions
+/// when cheaper arithmetic settles the side for certain, and compute it
+/// otherwise.
+struct ShapeSide {
+    double t = 0;
+    bool back = false;
+};
+
 /// Sphere or bubble. Rays starting inside find the far side.
 std::optional<ShapeHit> IntersectSphere(const Sphere& sphere, const Vec3& org, const Vec3& dir,
                                         double tmin = kFtiny);
+
+std::optional<ShapeSide> IntersectSphereSide(const Sphere& sphere, const Vec3& org,
+                                             const Vec3& dir, double tmin = kFtiny);
 
 /// Cone, cup, cylinder or tube: the lateral surface between the end planes
 /// through p0 and p1 (open ends, as Radiance). `inward` comes from the shape.
 std::optional<ShapeHit> IntersectCone(const Cone& cone, const Vec3& org, const Vec3& dir,
                                       double tmin = kFtiny);
+
+/// What IntersectCone derives from the cone before it looks at the ray (a
+/// square root and four divisions), for cones tested many times.
+struct ConeFrame {
+    Vec3 p0;
+    Vec3 axis;          // unit, from p0 toward p1
+    double length = 0;  // |p1 - p0|
+    double slope = 0;   // (r1 - r0) / length: the radius grows this much per unit of height
+    double r0 = 0;
+    bool inward = false;
+};
+ConeFrame MakeConeFrame(const Cone& cone);
+
+/// IntersectCone(cone, ...) for frame = MakeConeFrame(cone), bit for bit.
+std::optional<ShapeHit> IntersectCone(const ConeFrame& frame, const Vec3& org, const Vec3& dir,
+                                      double tmin = kFtiny);
+std::optional<ShapeSide> IntersectConeSide(const ConeFrame& frame, const Vec3& org,
+                                           const Vec3& dir, double tmin = kFtiny);
 
 /// Disc/annulus r0 <= |p - center| <= r1 (both radii inclusive). Rays with
 /// |dir·normal| <= kFtiny are parallel and miss, as in Radiance.
@@ -71,5 +102,7 @@ Bounds3 ShapeBounds(const Surface& surface);
 /// nullopt for a distant source.
 std::optional<ShapeHit> IntersectShape(const Surface& surface, const Vec3& org, const Vec3& dir,
                                        double tmin = kFtiny);
+std::optional<ShapeSide> IntersectShapeSide(const Surface& surface, const Vec3& org,
+                                            const Vec3& dir, double tmin = kFtiny);
 
 }  // namespace rt

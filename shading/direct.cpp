@@ -56,6 +56,24 @@ void SortBrightestFirst(std::vector<Contribution>& c, std::vector<Contribution>&
 
 }  // namespace
 
+void DirectLight::CountAim(ThreadState& ts, int source, bool hit) const {
+    SourceTally& aimed = ts.sourceTallies[source];
+    if (hit) {
+        if (aimed.aimSuccess >= 0) ++aimed.aimSuccess;
+        return;
+    }
+    // The sample missed the source (a partition of a non-parallelogram
+    // polygon reaching past its edge, a ray into a cylinder's open end, or
+    // rounding at grazing angles). Radiance warns once, when the misses
+    // have used up the credit (srcvalue()).
+    if (aimed.aimSuccess < 0) return;
+    aimed.aimSuccess -= SourceTally::kAimRequired;
+    if (aimed.aimSuccess < 0) {
+        const Surface& surface = s_.scene.surfaces[s_.sources[source].surface];
+        ts.Warn("aiming failure for light source \"" + surface.name + "\"");
+    }
+}
+
 Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
                              double distance) const {
     const LightSource& src = s_.sources[source];
@@ -74,23 +92,8 @@ Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
         sray.rod = -Dot(sray.dir, src.normal);
     } else {
         auto hit = s_.core.IntersectSurface(src.surface, sray.org, sray.dir);
-        SourceTally& aimed = ts.sourceTallies[source];
-        if (!hit) {
-            // The sample missed the source (a partition of a non-parallelogram
-            // polygon reaching past its edge, or rounding at grazing angles).
-            if (aimed.aimSuccess >= 0) {
-                aimed.aimSuccess -= SourceTally::kAimRequired;
-                if (aimed.aimSuccess < 0) {
-                    ts.Warn("aiming failure for light source \"" + surface.name + "\"");
-                }
-            }
-            return Rgb();
-        }
-        if (aimed.aimSuccess < 0) {
-            aimed.aimSuccess = 1;  // warn again at the next failure
-        } else if (aimed.aimSuccess < SourceTally::kAimCredit) {
-            ++aimed.aimSuccess;
-        }
+        CountAim(ts, source, hit.has_value());
+        if (!hit) return Rgb();
         sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
     }
     sray.rcol = Rgb();
@@ -151,35 +154,47 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
     auto& contribs = scratch.contributions;
     contribs.clear();
     for (const SourceSample& s : scratch.samples) {
-        DirectContribution c;
-        c.source = s.source;
-        c.dir = s.dir;
-        c.distance = s.distance;
-        c.coef = coef(s.dir, s.omega);
-        if (Bright(c.coef) <= 0.0) continue;
+        const Rgb coefficient = coef(s.dir, s.omega);
+        if (Bright(coefficient) <= 0.0) continue;
         const LightSource& src = s_.sources[s.source];
+        const Rgb& color = std::get<LightParams>(s_.scene.materials[src.material].params).color;
+        Rgb value;
+        double distance = s.distance;
         if ((src.shape == LightSource::Shape::Distant || src.parallelogram) && !src.patterned) {
             // The sample lands on the source: its radiance is the material's
             // colour from the front (spot cones and proximity were checked
             // when sampling), black from behind.
             const bool front = src.shape == LightSource::Shape::Distant ||
                                Dot(s.dir, src.normal) < 0.0;
-            const Rgb& color = std::get<LightParams>(s_.scene.materials[src.material].params).color;
-            c.value = front ? color * c.coef : Rgb();
+            if (!front) continue;
+            value = color * coefficient;
+        } else if (!src.patterned) {
+            // SourceValue() without a ray tree: the sample ray must meet the
+            // source, and the material's colour shows from the front only
+            // (what its light material gives a shadow ray aimed at it).
+            const auto hit = s_.core.IntersectSurfaceSide(src.surface, ray.rop, s.dir);
+            CountAim(ts, s.source, hit.has_value());
+            if (!hit || hit->back) continue;
+            // The shadow ray must stop where it enters the source's surface,
+            // not at the sample point: a sphere's or cylinder's sample points
+            // lie inside it, behind its own surface, which an any-hit query
+            // would count as the source blocking itself.
+            distance = hit->t;
+            value = color * coefficient;
         } else {
             TracedRay sray;
             tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);
             sray.dir = s.dir;
             sray.rsrc = s.source;
-            c.value = SourceValue(ts, sray, s.source, s.distance) * c.coef;
-            // The shadow ray must stop where it enters the source's surface,
-            // not at the sample point: a sphere's or cylinder's sample points
-            // lie inside it, behind its own surface, which an any-hit query
-            // would count as the source blocking itself.
-            c.distance = sray.rot;
+            value = SourceValue(ts, sray, s.source, s.distance) * coefficient;
+            distance = sray.rot;  // where it enters the source, as above
         }
-        c.bright = Bright(c.value);
-        if (c.bright > 0.0) contribs.push_back(c);
+        const double bright = Bright(value);
+        // Built in place: a copy of a DirectContribution assembled on the
+        // stack stalls on store forwarding.
+        if (bright > 0.0) {
+            contribs.emplace_back(s.source, s.dir, distance, coefficient, value, bright);
+        }
     }
     if (contribs.empty()) return;
     SortBrightestFirst(contribs, scratch.sortBuffer);
@@ -207,20 +222,28 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         SourceTally& tally = ts.sourceTallies[c.source];
         tally.ntests++;
         ++ts.stats.shadowRays;
-        if (s_.opaqueShadows && !ts.traceShadows) {
-            // Nothing in this scene transmits light, so any hit before the
-            // source blocks it: an any-hit query is enough.
+        if (s_.queryShadows && !ts.traceShadows) {
             // Stop just short of the sample point on the source itself.
-            const double reach = src.shape == LightSource::Shape::Distant
-                                     ? 0.0
-                                     : c.distance - std::max(s_.scene.distanceTolerance, 1e-7 * c.distance);
-            if (!s_.core.Occluded(ray.rop, c.dir, reach)) {
-                ray.rcol += c.value;
-                nhits++;
-                tally.nhits++;
+            const double reach =
+                src.shape == LightSource::Shape::Distant
+                    ? 0.0
+                    : c.distance - std::max(s_.scene.distanceTolerance, 1e-7 * c.distance);
+            // Transmitting surfaces are asked about first: a shadow ray that
+            // meets one is followed (below) exactly as without the queries,
+            // random numbers drawn by Russian roulette included. With none in
+            // the way, any hit before the source blocks it. The source itself
+            // is not in the way (the ray stops short of its first hit on it,
+            // or of its plane), so its test is skipped.
+            if (!s_.transmitting ||
+                !s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Transmitting, src.surface)) {
+                if (!s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Opaque, src.surface)) {
+                    ray.rcol += c.value;
+                    nhits++;
+                    tally.nhits++;
+                }
+                hwt += double(tally.nhits) / double(tally.ntests);
+                continue;
             }
-            hwt += double(tally.nhits) / double(tally.ntests);
-            continue;
         }
         TracedRay sray;
         tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);

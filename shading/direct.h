@@ -28,6 +28,9 @@ public:
 private:
     void AddUntimed(ThreadState& ts, TracedRay& ray,
                     FunctionRef<Rgb(const Vec3&, double)> coef) const;
+    /// Radiance's aiming count for `source` (SourceTally): one sample ray
+    /// that did or did not `hit` it.
+    void CountAim(ThreadState& ts, int source, bool hit) const;
     /// Radiance's srcvalue(): radiance arriving along a source ray aimed at
     /// `source`, whose sample point lies `distance` away.
     Rgb SourceValue(ThreadState& ts, TracedRay& sray, int source, double distance) const;

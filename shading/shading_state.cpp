@@ -54,20 +54,15 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
         shadowCheckCounts[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
     }
 
-    opaqueShadows = shading.backfaceVisible;
-    for (const Surface& s : scene.surfaces) {
-        if (s.material < 0) continue;
-        MaterialType t = scene.materials[s.material].type;
-        if (IsTransparentType(t) || t == MaterialType::Illum) opaqueShadows = false;
-    }
-    // A mixture may be partly a hole, or partly a transparent material.
-    for (const Pattern& p : scene.patterns) {
-        if (p.kind == ModifierKind::Mixture) opaqueShadows = false;
-    }
+    queryShadows = shading.backfaceVisible;
+    transmitting = core.HasTransmitting();
 }
 
 ThreadState::ThreadState(const ShadingSetup& setup, WarningSink warn_)
     : warn(std::move(warn_)), rng(setup.shading.seed), sourceTallies(setup.sources.size()) {
+    for (size_t i = 0; i < setup.sources.size(); ++i) {
+        sourceTallies[i].aimSuccess = SourceTally::FirstAimCount(setup.sources[i]);
+    }
     if (setup.scene.functions) {
         functionContext = std::make_unique<cal::Context>(*setup.scene.functions);
     }

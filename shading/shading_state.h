@@ -53,10 +53,13 @@ struct ShadingSetup {
     /// Radiance's hidden "Lamb" material for -i/-I: plastic with reflectance
     /// π, which turns reflected radiance into irradiance.
     Material lambertian;
-    /// No surface can pass light (no trans, glass, dielectric, interface,
-    /// illum or mixture, and back faces are visible): shadow rays need only
-    /// any-hit tests.
-    bool opaqueShadows = true;
+    /// Shadow rays are answered by occlusion queries (RayCore::Occluders):
+    /// followed through the surfaces as before when a transmitting surface is
+    /// in the way, otherwise blocked if an opaque one is and unshadowed if
+    /// none is. Needs back faces visible: with -bv- any surface passes light
+    /// from behind.
+    bool queryShadows = true;
+    bool transmitting = false;  // RayCore::HasTransmitting()
     /// (int)(n^dc + 0.5) for small n: how many contributions -dc says to test
     /// beyond the current one, without a std::pow per shading point.
     std::vector<int> shadowCheckCounts;
@@ -74,12 +77,18 @@ struct SourceTally {
     // by their ratio.
     long nhits = 1;
     long ntests = 2;
-    // A sample ray that hits its source adds 1 (up to kAimCredit), one that
-    // misses it takes kAimRequired; below zero the warning "aiming failure"
-    // is printed, and again after the next hit and miss.
-    static constexpr int kAimRequired = 100;
-    static constexpr int kAimCredit = 2 * kAimRequired;
-    int aimSuccess = 2 * kAimRequired - 1;
+    // Radiance's aiming count (srcvalue(), srcsupp.c): a sample ray that
+    // hits its source adds 1, without limit; one that misses takes
+    // kAimRequired, and the miss that takes the count below zero prints
+    // "aiming failure", once: a negative count never changes again. It
+    // starts at FirstAimCount: Radiance's "bitch on second failure", on the
+    // fourth for a cylinder.
+    static constexpr long kAimRequired = 100;
+    long aimSuccess = 2 * kAimRequired - 1;
+    /// Radiance's starting count for `source`.
+    static long FirstAimCount(const LightSource& source) {
+        return (source.shape == LightSource::Shape::Cylinder ? 4 : 2) * kAimRequired - 1;
+    }
 };
 
 /// One light-source sample's share of the direct term at a shading point.

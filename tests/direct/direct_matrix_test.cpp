@@ -195,17 +195,6 @@ std::vector<std::string> Messages(const std::vector<std::string>& lines, const s
     return out;
 }
 
-/// The warnings both programs must agree on: all but "aiming failure",
-/// which counts sample rays that miss their source. lazyrad counts as
-/// Radiance does, but its rays miss in places Radiance's do not (README,
-/// Differences).
-std::vector<std::string> WarningsCompared(std::vector<std::string> messages) {
-    std::erase_if(messages, [](const std::string& m) {
-        return m.find("aiming failure") != std::string::npos;
-    });
-    return messages;
-}
-
 struct Outcome {
     int status = 0;
     std::vector<std::string> err;
@@ -274,8 +263,11 @@ void CheckRun(const MatrixRun& r) {
     for (const auto& m : Messages(r.err, "fatal"))
         EXPECT_TRUE(HasKey(Messages(o.err, "fatal"), KeyOf(m)))
             << "Radiance: " << m << "\nlazyrad:" << errText.str();
-    const auto ours = WarningsCompared(Messages(o.err, "warning"));
-    const auto theirs = WarningsCompared(Messages(r.err, "warning"));
+    // Every warning, "aiming failure" included: lazyrad counts the sample
+    // rays that miss their source as Radiance does, with a cylinder's larger
+    // allowance (the fat cylinders' cases fail without it).
+    const auto ours = Messages(o.err, "warning");
+    const auto theirs = Messages(r.err, "warning");
     for (const auto& m : theirs)
         EXPECT_TRUE(HasKey(ours, KeyOf(m))) << "Radiance warns: " << m << "\nlazyrad:" << errText.str();
     for (const auto& m : ours)

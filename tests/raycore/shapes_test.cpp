@@ -311,5 +311,66 @@ TEST(Shape, BoundsContainGeometry) {
     EXPECT_FALSE(IntersectShape(b.scene().surfaces[2], {0, 0, 0}, {0, 0, 1}));
 }
 
+// --- side without the normal ----------------------------------------------
+
+/// IntersectShapeSide must give IntersectShape's distance and, for its
+/// normal, -Dot(dir, normal) < 0, bit for bit: on random rays, from inside and
+/// outside, and on rays that graze the surface so closely (1e-16 to 1e-7 of
+/// a radian off the tangent plane) that the cheap side test must hand over to
+/// the normal.
+TEST(ShapeSide, EqualsTheFullHitBitForBit) {
+    testing::SceneBuilder b;
+    b.AddSphere({0.3, -0.2, 0.1}, 0.7);
+    b.AddSphere({1, 1, 1}, 0.05, true);                      // bubble
+    b.AddCone({0, 0, 0}, {0.2, 0.1, 2}, 0.03, 0.03);        // cylinder
+    b.AddCone({1, 0, 0}, {1, 2, 0.5}, 0.4, 0.4, true);      // tube
+    b.AddCone({0, 1, 0}, {0.5, 1, 1.5}, 0.6, 0.1);          // cone
+    b.AddCone({-1, 0, 0}, {-1, 0.3, 1}, 0.1, 0.5, true);    // cup
+    b.AddCone({2, 2, 0}, {2, 2, 1}, 0.5, 0);                // cone to an apex
+    b.AddRing({0, 0, 1}, {0.3, 0.2, 1}, 0.1, 0.6);
+    b.AddPolygon({{0, 0, 0}, {1, 0, 0.2}, {0.8, 1, 0.3}, {0.1, 0.7, 0.1}});
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0, grazing = 0, backs = 0;
+    const auto check = [&](const Surface& surface, const Vec3& org, const Vec3& dir) {
+        const auto full = IntersectShape(surface, org, dir);
+        const auto side = IntersectShapeSide(surface, org, dir);
+        ASSERT_EQ(full.has_value(), side.has_value()) << org << " " << dir;
+        if (!full) return;
+        ++hits;
+        EXPECT_EQ(side->t, full->t) << org << " " << dir;
+        const bool back = -Dot(dir, full->normal) < 0.0;
+        EXPECT_EQ(side->back, back) << SurfaceTypeName(surface.type) << " " << org << " " << dir;
+        backs += back;
+    };
+    for (const Surface& surface : b.scene().surfaces) {
+        const Bounds3 box = ShapeBounds(surface);
+        const Vec3 mid = (box.lo + box.hi) * 0.5;
+        for (int i = 0; i < 20000; ++i) {
+            // Random rays through the shape's box, from near and far.
+            const Vec3 target = mid + (box.hi - box.lo) * (0.6 * u(rng));
+            const Vec3 org = target + testing::RandomDirection(rng) * (i % 2 ? 3.0 : 0.2);
+            const Vec3 dir = Normalize(target - org);
+            check(surface, org, dir);
+            // A ray through a hit point, tilted out of the tangent plane by
+            // 1e-16 to 1e-7.
+            const auto hit = IntersectShape(surface, org, dir);
+            if (!hit) continue;
+            const Vec3 p = org + dir * hit->t;
+            const Frame frame = Frame::Around(hit->normal);
+            const double a = 2 * kPi * (0.5 + 0.5 * u(rng));
+            const double tilt =
+                std::copysign(std::pow(10.0, -7 - 9 * (0.5 + 0.5 * u(rng))), u(rng));
+            const Vec3 graze = Normalize(frame.u * std::cos(a) + frame.v * std::sin(a) +
+                                         hit->normal * tilt);
+            check(surface, p - graze * (0.05 + 0.5 * (1 + u(rng))), graze);
+            ++grazing;
+        }
+    }
+    EXPECT_GT(hits, 150000);
+    EXPECT_GT(grazing, 80000);
+    EXPECT_GT(backs, 20000);
+}
+
 }  // namespace
 }  // namespace rt
