@@ -235,21 +235,6 @@ std::array<double, 2> RotationalGradientOf(const HessianHemisphere& h, const std
     return {sum0 / cells, sum1 / cells};
 }
 
-void AddScaled(Matrix3& a, const Matrix3& b, double s) {
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j)
-            a.m[i][j] += s * b.m[i][j];
-    }
-}
-
-/// a·bᵀ + b·aᵀ, added s times.
-void AddSymmetric(Matrix3& m, const Vec3& a, const Vec3& b, double s) {
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j)
-            m.m[i][j] += s * (a[i] * b[j] + b[i] * a[j]);
-    }
-}
-
 bool IsFinite(const Matrix3& a) {
     for (const auto& row : a.m) {
         for (const double x : row) {
@@ -374,7 +359,7 @@ double Matrix3::Form(const Vec3& a, const Vec3& b) const {
 
 namespace detail {
 
-FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n) {
+void EdgeSums::Add(const Vec3& r0, const Vec3& r1, const Vec3& n, double coefficient) {
     const Vec3 e = r1 - r0;
     const Vec3 c = Cross(r0, r1);
     const double cc = LengthSquared(c);
@@ -386,30 +371,53 @@ FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n
     const double se = 1.0 / ee;
     // I1 = angle(r0, r1)/|c|; atan2 rather than Radiance's acos of the cosine,
     // which loses half its digits for the small angles between neighbours.
-    const double i1 = std::atan2(std::sqrt(cc), Dot(r0, r1)) / std::sqrt(cc);
+    const double rc = std::sqrt(cc);
+    const double i1 = std::atan2(rc, Dot(r0, r1)) / rc;
     const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 / cc;
     const double j2 = (0.5 * (s0 - s1) - er0 * i2) * se;
     const Vec3 q = r0 * i2 + e * j2;
     const Vec3 nxe = Cross(n, e);
     const double nc = Dot(n, c);
 
-    FormFactorEdge out;
-    out.gradient = (nxe * i1 + q * (2.0 * nc)) * (0.5 / kPi);
+    const double gq = 2.0 * nc;
+    gradient[0] += coefficient * (nxe.x * i1 + q.x * gq);
+    gradient[1] += coefficient * (nxe.y * i1 + q.y * gq);
+    gradient[2] += coefficient * (nxe.z * i1 + q.z * gq);
 
     const double i3 = (er1 * s1 * s1 - er0 * s0 * s0 + 3.0 * ee * i2) / (4.0 * cc);
     const double j3 = 0.25 * se * (s0 * s0 - s1 * s1) - er0 * se * i3;
     const double k3 = se * (i2 - i3 / s0 - 2.0 * er0 * j3);
-    Matrix3& h = out.hessian;
-    AddSymmetric(h, nxe, q, 1.0);
-    AddSymmetric(h, r0, r0, 2.0 * nc * i3);
-    AddSymmetric(h, e, e, 2.0 * nc * k3);
-    AddSymmetric(h, r0, e, 4.0 * nc * j3);
-    for (int k = 0; k < 3; ++k)
-        h.m[k][k] -= nc * i2;
-    for (auto& row : h.m) {
-        for (double& x : row)
-            x *= -1.0 / kPi;
+    // The Hessian term is sym(nxe, q) + 2nc·i3·sym(r0, r0) + 2nc·k3·sym(e, e)
+    // + 4nc·j3·sym(r0, e) − nc·i2·I with sym(a, b) = a·bᵀ + b·aᵀ; the last
+    // three outer products regroup as r0·xᵀ + e·yᵀ (symmetric as a whole) with
+    // x = 4nc·i3·r0 + 4nc·j3·e and y = 4nc·k3·e + 4nc·j3·r0. Written out per
+    // entry: Vec3's indexed access does not vectorise.
+    const double a = 4.0 * nc * i3, b = 4.0 * nc * k3, d = 4.0 * nc * j3;
+    const Vec3 x = r0 * a + e * d;
+    const Vec3 y = e * b + r0 * d;
+    const double diagonal = nc * i2;
+    hessian[0] += coefficient * (2.0 * nxe.x * q.x + r0.x * x.x + e.x * y.x - diagonal);
+    hessian[1] += coefficient * (nxe.x * q.y + q.x * nxe.y + r0.x * x.y + e.x * y.y);
+    hessian[2] += coefficient * (nxe.x * q.z + q.x * nxe.z + r0.x * x.z + e.x * y.z);
+    hessian[3] += coefficient * (2.0 * nxe.y * q.y + r0.y * x.y + e.y * y.y - diagonal);
+    hessian[4] += coefficient * (nxe.y * q.z + q.y * nxe.z + r0.y * x.z + e.y * y.z);
+    hessian[5] += coefficient * (2.0 * nxe.z * q.z + r0.z * x.z + e.z * y.z - diagonal);
+}
+
+void EdgeSums::To(Vec3& gradientOut, Matrix3& hessianOut) const {
+    gradientOut = Vec3(gradient[0], gradient[1], gradient[2]) * (0.5 / kPi);
+    int u = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = i; j < 3; ++j, ++u)
+            hessianOut.m[i][j] = hessianOut.m[j][i] = hessian[u] * (-1.0 / kPi);
     }
+}
+
+FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n) {
+    EdgeSums sums;
+    sums.Add(r0, r1, n, 1.0);
+    FormFactorEdge out;
+    sums.To(out.gradient, out.hessian);
     return out;
 }
 
@@ -444,6 +452,7 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
     auto t2 = [&](int i, int j) {
         return farthest(Index(ns, i + 1, j + 1), Index(ns, i + 1, j), Index(ns, i, j + 1));
     };
+    detail::EdgeSums sums;
     // Σ_T Y_T Σ_{edges of T} is summed per edge: an inner edge is traversed
     // once each way by its two triangles, so it counts (Y_T − Y_T') times and
     // drops out where both have the same brightness (Radiance's book-keeping
@@ -451,10 +460,7 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
     auto edge = [&](int ia, int ja, int ib, int jb, double coefficient) {
         if (coefficient == 0)
             return;
-        const detail::FormFactorEdge t =
-            detail::FormFactorEdgeTerms(h.At(ia, ja).offset, h.At(ib, jb).offset, n);
-        est.gradient += t.gradient * coefficient;
-        AddScaled(est.hessian, t.hessian, coefficient);
+        sums.Add(h.At(ia, ja).offset, h.At(ib, jb).offset, n, coefficient);
     };
     const int last = ns - 1;
     for (int i = 0; i < ns; ++i) {
@@ -473,6 +479,7 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
             edge(i, j + 1, i + 1, j, t1(i, j) - t2(i, j));
         }
     }
+    sums.To(est.gradient, est.hessian);
     if (!est.radiometric)
         est.gradient = Vec3();
     return est;

@@ -186,6 +186,17 @@ struct FormFactorEdge {
 };
 FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n);
 
+/// A running sum of coefficient × FormFactorEdgeTerms over many edges, kept
+/// without the constant factors (1/2π, −1/π) and with the Hessian's six
+/// distinct entries only, which a hemisphere's ~3·ns² edges would otherwise
+/// pay for each time. FormFactorEdgeTerms is one Add and To.
+struct EdgeSums {
+    double gradient[3] = {0, 0, 0};
+    double hessian[6] = {0, 0, 0, 0, 0, 0};  // xx, xy, xz, yy, yz, zz
+    void Add(const Vec3& r0, const Vec3& r1, const Vec3& n, double coefficient);
+    void To(Vec3& gradientOut, Matrix3& hessianOut) const;
+};
+
 /// The super-sampling priorities: for each cell (row-major), the variance of
 /// the first-pass brightness of its neighbours above, below, left and right
 /// (those that exist), leaving the cell's own sample out. Units: radiance².
