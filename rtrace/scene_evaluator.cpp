@@ -9,6 +9,7 @@
 #include <exception>
 #include <filesystem>
 #include <mutex>
+#include <memory>
 #include <new>
 #include <optional>
 #include <string>
@@ -60,11 +61,17 @@ public:
         // Set-up warnings ("no light sources found") once, not per thread.
         const auto shared =
             Renderer::Share(scene_, core_, options.shading, options.ambient, warn, cache_);
+        // Every thread's warnings reach the sink, one at a time: Radiance's
+        // -n processes each print their own.
+        WarningSink serialized;
+        if (warn) {
+            serialized = [warn, mutex = std::make_shared<std::mutex>()](const std::string& m) {
+                const std::lock_guard<std::mutex> lock(*mutex);
+                warn(m);
+            };
+        }
         for (int i = 0; i < threads; ++i) {
-            // Warnings while tracing come from the first thread only, so
-            // that threads do not write to the sink at once.
-            renderers_.push_back(
-                std::make_unique<Renderer>(shared, i == 0 ? warn : WarningSink()));
+            renderers_.push_back(std::make_unique<Renderer>(shared, threads == 1 ? warn : serialized));
             // -t asks for the report, which then says where the time went.
             renderers_.back()->EnableTiming(options.reportSeconds > 0);
         }

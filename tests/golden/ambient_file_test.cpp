@@ -132,6 +132,37 @@ TEST(Multiprocessing, OutputKeepsInputOrder) {
     EXPECT_EQ(one, two);
 }
 
+TEST(Multiprocessing, EveryThreadsWarningsArePrinted) {
+    // A pattern whose function fails for every ray: each thread warns once
+    // (the first time it meets the error), so two threads that both trace
+    // rays print the warning twice. Only the first thread's warnings used to
+    // be printed.
+    const std::string dir = TempPath("warn_dir");
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/bad.cal") << "badval = log(-1 - Dx*Dx);\n";
+    std::ofstream(dir + "/w.rad") << "void brightfunc bad 2 badval bad.cal 0 0\n"
+                                     "bad plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                                     "grey sphere ball 0 0 4 0 0 0 1\n"
+                                     "void light lamp 0 0 3 10 10 10\n"
+                                     "lamp sphere bulb 0 0 4 0 0 5 0.5\n";
+    {
+        std::ofstream rays(dir + "/rays.txt");
+        for (int i = 0; i < 200; ++i) rays << "0 0 3 0 0 -1\n";
+    }
+    const auto count = [](const std::string& text) {
+        int n = 0;
+        for (size_t at = 0; (at = text.find("compute error for brightfunc", at)) != std::string::npos;
+             ++at) {
+            ++n;
+        }
+        return n;
+    };
+    const std::string run = "cd " + dir + " && " + kRtrace + " -h -ab 1 -ad 512 -aa 0 ";
+    EXPECT_EQ(count(Shell(run + "-n 1 w.rad < rays.txt 2>&1 >/dev/null")), 1);
+    EXPECT_EQ(count(Shell(run + "-n 2 w.rad < rays.txt 2>&1 >/dev/null")), 2);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Multiprocessing, TwoThreadsShareTheCacheAndKeepAccuracy) {
     const std::string opts = " -h -w -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64 " + kSource +
                              "/scenes/cornell/cornell.rad < " + kSource + "/scenes/cornell/floor.pts";
