@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Classic against Hessian records (rtrace -ah- / -ah+), with real Radiance 5.4a
-# on the same jobs, on this machine: records per ambient level, CPU seconds and
+# on the same jobs, on this machine: records per ambient level, rays (lazyrad
+# only: hemisphere and specular + shadow rays), CPU seconds and
 # luminance error against converged references (the error has the reference's
 # own noise taken off in quadrature, bench/score.py).
 #
@@ -38,8 +39,11 @@ run() {  # label cmd... (stdin points, stdout values) -> prints "cpu records err
   local label=$1; shift
   rm -f "$tmp/a.amb"
   /usr/bin/time -f "%U" -o "$tmp/t" "$1" -af "$tmp/a.amb" "${@:2}" < "$points" > "$tmp/out" 2> "$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
-  local cpu; cpu=$(tail -1 "$tmp/t")
-  printf "%-28s cpu %6.2f s  records %-14s %s\n" "$label" "$cpu" "$(levels "$tmp/a.amb")" "$(python3 bench/score.py "$ref" "$tmp/out")"
+  local cpu rays; cpu=$(tail -1 "$tmp/t")
+  # lazyrad's -t summary counts the rays (hemisphere and specular + shadow);
+  # Radiance's rtrace has no such count.
+  rays=$(sed -n 's/.* \([0-9]*\) rays traced + \([0-9]*\) shadow rays.*/\1+\2/p' "$tmp/err" | tail -1)
+  printf "%-28s cpu %6.2f s  records %-14s rays %-18s %s\n" "$label" "$cpu" "$(levels "$tmp/a.amb")" "${rays:--}" "$(python3 bench/score.py "$ref" "$tmp/out")"
 }
 for name in $jobs; do
   read -r scene points ref opts <<< "$(job "$name")"
@@ -47,9 +51,9 @@ for name in $jobs; do
   echo "== $name: rtrace $opts ($(wc -l < "$points") lines)"
   for s in $seeds; do
     # shellcheck disable=SC2086
-    run "lazyrad classic seed $s" "$lz" -ah- -seed "$s" $opts "$scene"
+    run "lazyrad classic seed $s" "$lz" -t 100000 -ah- -seed "$s" $opts "$scene"
     # shellcheck disable=SC2086
-    run "lazyrad hessian seed $s" "$lz" -ah+ -seed "$s" $opts "$scene"
+    run "lazyrad hessian seed $s" "$lz" -t 100000 -ah+ -seed "$s" $opts "$scene"
     sleep 1.1
     # shellcheck disable=SC2086
     run "radiance" "$RAD/rtrace" $opts "$tmp/scene.oct"
