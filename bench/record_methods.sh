@@ -9,14 +9,15 @@
 #     RTRACE  lazyrad's rtrace (e.g. build/bin/rtrace)
 #     SEEDS   lazyrad seeds, default "0 1 2"; Radiance runs as many times
 #             (-u+ seeds from the clock, so runs are a second apart)
-#     JOBS    subset of: floor edges daylit dense dense_tool view (default all)
+#     JOBS    subset of: floor edges daylit dense dense_tool view daylit_dense
+#             (default all)
 # RADIANCE_BIN (default ../shared/reference/radiance-5.4a/bin) is used only
 # here, for measurement; prints one line per run and a summary per job.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 lz=${1:?usage: record_methods.sh RTRACE [SEEDS] [JOBS]}
 seeds=${2:-0 1 2}
-jobs=${3:-floor edges daylit dense dense_tool view}
+jobs=${3:-floor edges daylit dense dense_tool view daylit_dense}
 RAD=${RADIANCE_BIN:-$PWD/../shared/reference/radiance-5.4a/bin}
 export RAYPATH=${RAYPATH:-.:$RAD/../lib}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -30,6 +31,7 @@ job() {  # name -> "scene points reference options"
     dense) echo "scenes/cornell/cornell.rad scenes/cornell/floor_dense.pts scenes/cornell/ref/floor_dense_I_ab2.txt -h -I -ab 2 $defaults" ;;
     dense_tool) echo "scenes/cornell/cornell.rad scenes/cornell/floor_dense.pts scenes/cornell/ref/floor_dense_I_ab2.txt -h -I -ab 2 $tool" ;;
     view) echo "scenes/cornell/cornell.rad scenes/cornell/view128.rays scenes/cornell/ref/view128_ab2.txt -h -ab 2 $defaults" ;;
+    daylit_dense) echo "scenes/daylit_room/daylit_room.rad scenes/daylit_room/workplane_dense.pts scenes/daylit_room/ref/workplane_dense_I_ab4.txt -h -I -ab 4 $defaults" ;;
   esac
 }
 levels() {  # ambient file -> "n0/n1/..." records per level
