@@ -54,14 +54,40 @@ std::optional<Rgb> IrradianceCache::Lookup(const AmbientQuery& query,
     return store_->Interpolate(query, used, hidden);
 }
 
+double IrradianceCache::DeeperSampleFraction(double share) {
+    if (!(share < 1)) return 1;  // NaN too
+    return std::max(kMinDeeperFraction, share * share);
+}
+
+double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
+                                       const IrradianceThread& thread,
+                                       const OtherRadianceRef* otherRadiance) const {
+    if (level <= 0 || !otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
+        return 1;
+    }
+    const auto [sum, count] = thread.madeBright[static_cast<size_t>(level)];
+    if (count < kShareGuessRecords) return 1;
+    // The ambient term's guess: the material's coefficient times the level's
+    // typical Ē, from records made before this one (not from this record's
+    // own samples, so that how many it takes cannot depend on what they saw,
+    // which would bias it).
+    const double ambient = coefficientIntensity * sum / count;
+    const double other = (*otherRadiance)();
+    if (!(ambient > 0) || !(other > 0)) return 1;
+    return DeeperSampleFraction(ambient / (ambient + other));
+}
+
 IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, double weight,
-                                                 int level, IrradianceThread& thread,
+                                                 double fraction, int level,
+                                                 IrradianceThread& thread,
                                                  IrradianceCounters& counters, Rng& rng,
                                                  IrradianceTraceRef trace) const {
     HemisphereOptions options;
     options.divisions = settings_.divisions;
     options.superSamples = settings_.superSamples;
-    options.weight = weight;
+    // Both -ad's and -as's counts scale with this weight; the record keeps
+    // its own (`weight`).
+    options.weight = weight * fraction;
     options.caching = store_ != nullptr;
     const bool hessian = settings_.method == RecordMethod::Hessian;
     const int divisions = hessian ? HessianDivisions(options) * HessianDivisions(options)
@@ -112,7 +138,8 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
 IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
                                            double coefficientIntensity, IrradianceThread& thread,
                                            IrradianceCounters& counters, Rng& rng,
-                                           IrradianceTraceRef trace, OccludedRef occluded) const {
+                                           IrradianceTraceRef trace, OccludedRef occluded,
+                                           const OtherRadianceRef* otherRadiance) const {
     using Source = IrradianceResult::Source;
     AmbientQuery query = levelFree;
     query.level = thread.depth;
@@ -125,7 +152,7 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
             weight = std::min(weight, 0.8 * coefficientIntensity * query.rayWeight /
                                           (std::max(settings_.divisions, 1) * lw));
         }
-        const Sampled h = Sample(query, weight, -1, thread, counters, rng, trace);
+        const Sampled h = Sample(query, weight, 1.0, -1, thread, counters, rng, trace);
         if (!h.value) return {};
         return {h.value, Source::Computed};
     }
@@ -141,11 +168,17 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
     // A new record of this level.
     const double weight = RecordWeight(thread.depth, query.rayWeight);
     const int level = thread.depth;
-    const Sampled h = Sample(query, weight, level, thread, counters, rng, trace);
+    const double fraction = SampleFraction(level, coefficientIntensity, thread, otherRadiance);
+    const Sampled h = Sample(query, weight, fraction, level, thread, counters, rng, trace);
     // No division got a sample (every ray refused, e.g. by -lr): Radiance's
     // makeambient() failure, answered with the ambient value.
     if (!h.value) return {};
     if (const auto& record = h.record) {
+        if (thread.madeBright.size() <= static_cast<size_t>(level)) {
+            thread.madeBright.resize(static_cast<size_t>(level) + 1);
+        }
+        thread.madeBright[static_cast<size_t>(level)].first += Bright(record->value);
+        ++thread.madeBright[static_cast<size_t>(level)].second;
         if (store_->Add(*record)) {
             thread.newRecords.push_back(*record);
             if (counters.recordsPerLevel.size() <= static_cast<size_t>(level)) {

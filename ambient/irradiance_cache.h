@@ -57,7 +57,16 @@ struct IrradianceThread {
     /// Records made by this thread and not yet handed out (for ambient files).
     std::vector<AmbientRecord> newRecords;
     bool timing = false;
+    /// Per ambient level: Σ bright(Ē) over the records this thread made, and
+    /// their number; the typical Ē of a level for DeeperSampleFraction.
+    std::vector<std::pair<double, int>> madeBright;
 };
+
+/// The radiance (brightness, W·sr⁻¹·m⁻²) a shaded point sends its viewer
+/// besides the ambient term being asked for: its direct light and what it
+/// has already (specular reflections). Called only when a deeper record is
+/// about to be made.
+using OtherRadianceRef = FunctionRef<double()>;
 
 /// How a new hemisphere is sampled and turned into a record.
 enum class RecordMethod {
@@ -122,9 +131,32 @@ public:
     /// is intens() of the material's diffuse coefficient, which sizes
     /// cache-less hemispheres. Raises `thread.depth` while sampling, so that
     /// the trace function's own queries are of the next level.
+    ///
+    /// `otherRadiance` (may be null) sizes records below the first level by
+    /// the ambient term's share of what the point sends its viewer
+    /// (DeeperSampleFraction); without it they are sampled in full.
     IrradianceResult Evaluate(const AmbientQuery& query, double coefficientIntensity,
                               IrradianceThread& thread, IrradianceCounters& counters, Rng& rng,
-                              IrradianceTraceRef trace, OccludedRef occluded) const;
+                              IrradianceTraceRef trace, OccludedRef occluded,
+                              const OtherRadianceRef* otherRadiance = nullptr) const;
+
+    /// The fraction of Radiance's sample count (-ad and -as times the record
+    /// weight) that a record below the first level takes, when the ambient
+    /// term carries `share` (in [0, 1]) of the radiance its point sends the
+    /// surfaces that look at it: share², at least kMinDeeperFraction.
+    ///
+    /// Why: the record's Monte Carlo error reaches its viewers scaled by that
+    /// share, so with share² of the samples every record adds the same
+    /// relative noise to what looks at it as a record whose point has no
+    /// other light does with all of them. Where lamps light the surfaces
+    /// directly most deeper records need far fewer rays; where all light is
+    /// indirect (a sky seen through a window) nothing changes. The first
+    /// level is never reduced: its error is the answer's own.
+    static double DeeperSampleFraction(double share);
+    static constexpr double kMinDeeperFraction = 0.25;
+    /// Records a thread makes at a level before their mean Ē is trusted as
+    /// the level's typical value.
+    static constexpr int kShareGuessRecords = 32;
 
     /// Radiance's weight of a new record at ambient level `level` for a ray
     /// of weight `rayWeight` (§4.4): 0.5^level, or about the ray's own weight
@@ -143,8 +175,13 @@ private:
         std::optional<Rgb> value;
         std::optional<AmbientRecord> record;
     };
-    Sampled Sample(const AmbientQuery& query, double weight, int level, IrradianceThread& thread,
-                   IrradianceCounters& counters, Rng& rng, IrradianceTraceRef trace) const;
+    /// `fraction` scales the hemisphere's sample counts (not the record's weight).
+    Sampled Sample(const AmbientQuery& query, double weight, double fraction, int level,
+                   IrradianceThread& thread, IrradianceCounters& counters, Rng& rng,
+                   IrradianceTraceRef trace) const;
+    /// DeeperSampleFraction for a new record of level `level` (> 0), or 1.
+    double SampleFraction(int level, double coefficientIntensity, const IrradianceThread& thread,
+                          const OtherRadianceRef* otherRadiance) const;
 
     IrradianceSettings settings_;
     std::shared_ptr<AmbientCache> store_;

@@ -40,7 +40,7 @@ void IndirectLight::Note(ThreadState& ts, RayResult::AmbientOutcome outcome,
 }
 
 Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const TracedRay& ray,
-                           const Vec3& normal) const {
+                           const Vec3& normal, const OtherRadianceRef* otherRadiance) const {
     using Outcome = RayResult::AmbientOutcome;
     if (s_.ambient.divisions <= 0 || ts.ambient.depth >= s_.ambient.bounces || Excluded(ray) ||
         Bright(coefficient) <= kFtiny) {
@@ -94,7 +94,8 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
     const double directBefore = ts.stats.secondsDirect;
     const bool outermost = ts.ambient.depth == 0;
     const IrradianceResult r = s_.irradiance.Evaluate(query, Intens(coefficient), ts.ambient,
-                                                      ts.stats, ts.rng, trace, occluded);
+                                                      ts.stats, ts.rng, trace, occluded,
+                                                      otherRadiance);
     if (ts.ambient.timing && outermost) {
         ts.stats.secondsSampling -= ts.stats.secondsDirect - directBefore;
     }

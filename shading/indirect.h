@@ -23,9 +23,11 @@ public:
 
     /// The indirect term A ⊗ E/π at a shaded point, for diffuse coefficient
     /// `coefficient` and shading normal `normal` (unit); with no ambient
-    /// bounces this is the -av value.
-    Rgb Ambient(ThreadState& ts, const Rgb& coefficient, const TracedRay& ray,
-                const Vec3& normal) const;
+    /// bounces this is the -av value. `otherRadiance` (may be null): what
+    /// the point sends its viewer besides this term, for sizing deeper
+    /// records (IrradianceCache::DeeperSampleFraction).
+    Rgb Ambient(ThreadState& ts, const Rgb& coefficient, const TracedRay& ray, const Vec3& normal,
+                const OtherRadianceRef* otherRadiance = nullptr) const;
 
 private:
     /// The fallback where no bounce is computed: -av, or its -aw average.

@@ -229,21 +229,7 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         }
     }
 
-    // Indirect light, from this side and (translucent) from the other.
-    if (rdiff > kFtiny) {
-        Rgb a = mcolor * rdiff;
-        if (reflBelowThreshold) a += scolor;
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm);
-    }
-    if (tdiff > kFtiny) {
-        Rgb a = mcolor * tdiff;
-        if (transBelowThreshold) a += mcolor * tspec;
-        ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, textured ? -pnorm : ray.ron);
-        ray.FlipSurface();
-    }
-
-    // Direct light (Radiance's dirnorm()).
+    // Direct light's coefficient per source sample (Radiance's dirnorm()).
     const bool fresnelOnDiffuse = pure && rspec >= kFresnelThreshold;
     auto coefficient = [&](const Vec3& ldir, double omega) {
         Rgb cval;
@@ -274,6 +260,31 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         }
         return cval;
     };
+    // Indirect light, from this side and (translucent) from the other.
+    if (rdiff > kFtiny) {
+        Rgb a = mcolor * rdiff;
+        if (reflBelowThreshold) a += scolor;
+        // What the point sends its viewer besides the ambient term: what the
+        // ray has so far and the direct light, computed on a copy, only when
+        // a deeper record is about to be made (the direct light is added
+        // after the ambient term, as Radiance does, for -dt's test).
+        const auto other = [&]() {
+            TracedRay copy = ray;
+            tree.direct().Add(ts, copy, coefficient);
+            return Bright(copy.rcol);
+        };
+        const OtherRadianceRef otherRef(other);
+        ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm, &otherRef);
+    }
+    if (tdiff > kFtiny) {
+        Rgb a = mcolor * tdiff;
+        if (transBelowThreshold) a += mcolor * tspec;
+        ray.FlipSurface();
+        ray.rcol += tree.indirect().Ambient(ts, a, ray, textured ? -pnorm : ray.ron);
+        ray.FlipSurface();
+    }
+
+    // Direct light, after the indirect term (Radiance's order).
     tree.direct().Add(ts, ray, coefficient);
 }
 

@@ -245,5 +245,80 @@ TEST(IrradianceCache, LeakTestRejectsRecordsBehindAWall) {
     EXPECT_EQ(leakRays, before);
 }
 
+TEST(IrradianceCache, DeeperSampleFractionIsTheShareSquaredWithAFloor) {
+    EXPECT_EQ(IrradianceCache::DeeperSampleFraction(1.0), 1.0);
+    EXPECT_DOUBLE_EQ(IrradianceCache::DeeperSampleFraction(0.8), 0.64);
+    EXPECT_DOUBLE_EQ(IrradianceCache::DeeperSampleFraction(0.6), 0.36);
+    EXPECT_EQ(IrradianceCache::DeeperSampleFraction(0.3), IrradianceCache::kMinDeeperFraction);
+    EXPECT_EQ(IrradianceCache::DeeperSampleFraction(0.0), IrradianceCache::kMinDeeperFraction);
+    EXPECT_EQ(IrradianceCache::DeeperSampleFraction(std::nan("")), 1.0);
+}
+
+/// Rays one new record takes at ambient level `level`, in a furnace, when the
+/// point's other light is `other` (negative: no OtherRadianceRef) and the
+/// thread has made `made` records of that level with mean Ē `typical`.
+struct DeeperRecord {
+    int rays = 0;
+    double value = 0;
+    bool otherAsked = false;
+};
+DeeperRecord MakeDeeperRecord(int level, double other, int made, double typical) {
+    const IrradianceCache cache(Settings(), Store());
+    IrradianceThread thread;
+    thread.depth = level;
+    thread.madeBright.assign(static_cast<size_t>(level) + 1, {0.0, 0});
+    thread.madeBright[static_cast<size_t>(level)] = {typical * made, made};
+    IrradianceCounters counters;
+    Rng rng(5);
+    Furnace env;
+    DeeperRecord out;
+    const auto otherRadiance = [&]() {
+        out.otherAsked = true;
+        return other;
+    };
+    const OtherRadianceRef ref(otherRadiance);
+    AmbientQuery q = At({0, 0, 0});
+    q.rayWeight = std::pow(0.5, level);
+    // Coefficient 0.5: the ambient term's guess is 0.5 · typical.
+    const auto r = cache.Evaluate(q, 0.5, thread, counters, rng, env, NeverOccluded,
+                                  other >= 0 ? &ref : nullptr);
+    EXPECT_TRUE(r.value);
+    out.rays = env.rays;
+    out.value = r.value ? r.value->g : 0;
+    EXPECT_EQ(counters.recordsPerLevel.size(), static_cast<size_t>(level) + 1);
+    return out;
+}
+
+TEST(IrradianceCache, DeeperRecordsTakeFewerRaysWhereOtherLightDominates) {
+    const double typical = 0.7;   // the ambient term's guess: 0.5 · 0.7 = 0.35
+    const DeeperRecord full = MakeDeeperRecord(1, -1, 100, typical);
+    const DeeperRecord dark = MakeDeeperRecord(1, 0.0, 100, typical);  // no other light
+    const DeeperRecord even = MakeDeeperRecord(1, 0.0875, 100, typical);  // share 0.8
+    const DeeperRecord lit = MakeDeeperRecord(1, 35.0, 100, typical);   // share 1/101
+    EXPECT_EQ(dark.rays, full.rays);
+    EXPECT_TRUE(even.otherAsked);
+    // Classic divisions: rows = round(sqrt(256 · 0.5 · f / π)), columns = round(π · rows).
+    EXPECT_EQ(full.rays, 6 * 19);
+    EXPECT_EQ(even.rays, 5 * 16);  // f = 0.64: rows = round(sqrt(26.1)) = 5
+    EXPECT_EQ(lit.rays, 3 * 9);    // f = 1/4, the floor
+    // Fewer samples of a furnace are still exact.
+    for (const DeeperRecord& r : {full, dark, even, lit}) EXPECT_NEAR(r.value, 0.7, 1e-12);
+}
+
+TEST(IrradianceCache, FirstLevelAndUnguessedRecordsAreSampledInFull) {
+    const DeeperRecord full = MakeDeeperRecord(1, -1, 100, 0.7);
+    // The first level is the answer's own error: never reduced, nor asked.
+    const DeeperRecord first = MakeDeeperRecord(0, 1e6, 100, 0.7);
+    EXPECT_FALSE(first.otherAsked);
+    EXPECT_EQ(first.rays, 9 * 28);  // rows = round(sqrt(256/π)) = 9
+    // Until the thread has made enough records of the level, no guess.
+    const DeeperRecord early =
+        MakeDeeperRecord(1, 1e6, IrradianceCache::kShareGuessRecords - 1, 0.7);
+    EXPECT_FALSE(early.otherAsked);
+    EXPECT_EQ(early.rays, full.rays);
+    const DeeperRecord enough = MakeDeeperRecord(1, 1e6, IrradianceCache::kShareGuessRecords, 0.7);
+    EXPECT_LT(enough.rays, full.rays);
+}
+
 }  // namespace
 }  // namespace rt
