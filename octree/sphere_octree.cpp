@@ -63,10 +63,12 @@ void SphereOctree::Insert(const Vec3& centre, double radius, std::uint32_t id) {
         return;
     }
 
-    // Descend while the half-size cell is still larger than the radius
-    // (avinsert: while s/2 > r), so below the root radius < cell size.
+    // Descend while the half-size cell is still larger than the radius times
+    // the slack (avinsert: while s/2 > r). Where an item sits only changes
+    // how fast it is found: each lies inside its cell, which is all the
+    // query's pruning needs.
     double cellSize = size_;
-    for (int depth = 0; depth < kMaxDepth && 0.5 * cellSize > radius; ++depth) {
+    for (int depth = 0; depth < kMaxDepth && 0.5 * cellSize > kPlacementSlack * radius; ++depth) {
         if (!node->children) {
             node->children = std::make_unique<Node[]>(8);
         }

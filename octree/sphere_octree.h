@@ -15,8 +15,8 @@
 //   something is pushed below it, its 8 children, allocated together. Cell
 //   bounds are not stored; queries derive them from the root cube.
 // * An item whose centre lies in the root cube descends from the root while
-//   cellSize/2 > radius (Radiance's avinsert rule) and at most kMaxDepth
-//   levels, choosing the child whose half-open side holds the centre (upper
+//   cellSize/2 > kPlacementSlack·radius (Radiance's avinsert rule has no
+//   slack) and at most kMaxDepth levels, choosing the child whose half-open side holds the centre (upper
 //   half when centre > midpoint, as avinsert).
 // * An item whose centre lies outside the root cube is kept in the root's own
 //   list, which every query scans. The root does not grow: callers size the
@@ -65,6 +65,13 @@ public:
     /// size * 2^-20 (about 1e-6 of the root); smaller spheres share the
     /// deepest cell's list, so the depth stays bounded whatever the radii.
     static constexpr int kMaxDepth = 20;
+
+    /// Items stop descending while the cell is still up to 2·kPlacementSlack
+    /// times their radius: two levels above Radiance's avinsert rule. A query
+    /// then walks fewer cells, each a pointer chase and a likely cache miss,
+    /// and tests a few more items per cell, which lie together in memory
+    /// (docs/benchmarks.md, "Record index").
+    static constexpr double kPlacementSlack = 4;
 
     /// Same contract as the std::function overload, without its indirect call
     /// per hit; visit is called as visit(std::uint32_t). Use this on hot paths.

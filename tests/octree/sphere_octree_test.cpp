@@ -296,15 +296,16 @@ TEST(SphereOctree, DepthIsBoundedForTinyRadii) {
     }
 }
 
-TEST(SphereOctree, PlacementFollowsRadianceRule) {
-    // avinsert: descend while cellSize/2 > r, so an item of radius r sits at
-    // the depth d where size/2^(d+1) <= r < size/2^d.
+TEST(SphereOctree, PlacementFollowsRadianceRuleWithSlack) {
+    // avinsert with slack k: descend while cellSize/2 > k·r, so an item of
+    // radius r sits at the depth d where size/2^(d+1) <= k·r < size/2^d.
+    const double k = SphereOctree::kPlacementSlack;
     for (int depth = 0; depth <= 6; ++depth) {
         SphereOctree tree(Vec3(0, 0, 0), 1.0);
         const double cell = std::ldexp(1.0, -depth);
-        tree.Insert(Vec3(0.3, 0.6, 0.9), 0.5 * cell, 1);  // exactly s/2: stops here
+        tree.Insert(Vec3(0.3, 0.6, 0.9), 0.5 * cell / k, 1);  // exactly s/2k: stops here
         EXPECT_EQ(tree.Stats().maxDepth, depth);
-        tree.Insert(Vec3(0.3, 0.6, 0.9), 0.49 * cell, 2);  // one level deeper
+        tree.Insert(Vec3(0.3, 0.6, 0.9), 0.49 * cell / k, 2);  // one level deeper
         EXPECT_EQ(tree.Stats().maxDepth, depth + 1);
     }
 }
