@@ -16,8 +16,8 @@
 //   bounds are not stored; queries derive them from the root cube.
 // * An item whose centre lies in the root cube descends from the root while
 //   cellSize/2 > kPlacementSlack·radius (Radiance's avinsert rule has no
-//   slack) and at most kMaxDepth levels, choosing the child whose half-open side holds the centre (upper
-//   half when centre > midpoint, as avinsert).
+//   slack) and at most kMaxDepth levels, choosing the child whose half-open
+//   side holds the centre (upper half when centre > midpoint, as avinsert).
 // * An item whose centre lies outside the root cube is kept in the root's own
 //   list, which every query scans. The root does not grow: callers size the
 //   root to hold (nearly) everything, and Stats().outsideItems reports misses.

@@ -277,6 +277,8 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm, &otherRef);
     }
     if (tdiff > kFtiny) {
+        // The back side's deeper records are sampled in full: the direct
+        // light computed above belongs to the front side's viewer.
         Rgb a = mcolor * tdiff;
         if (transBelowThreshold) a += mcolor * tspec;
         ray.FlipSurface();
