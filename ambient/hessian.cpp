@@ -39,6 +39,23 @@ constexpr int kMaxRedraws = 64;
 constexpr int kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
                                    {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
+/// The disc radius scale that keeps lifted directions off the horizon.
+constexpr double kDiscScale = 0.9999999999999;
+
+/// sin t and cos t for |t| <= π/4 from their Taylor series through t¹⁷ and
+/// t¹⁶: the first terms left out are below 1e-17 relative, so the result is
+/// as exact as std::sin/std::cos, without libm's general range reduction
+/// (the concentric map runs once per hemisphere ray).
+inline void SinCosQuarterTurn(double t, double& sinT, double& cosT) {
+    const double t2 = t * t;
+    sinT = t * (1.0 + t2 * (-1.0 / 6 + t2 * (1.0 / 120 + t2 * (-1.0 / 5040 +
+           t2 * (1.0 / 362880 + t2 * (-1.0 / 39916800 + t2 * (1.0 / 6227020800.0 +
+           t2 * (-1.0 / 1307674368000.0 + t2 * (1.0 / 355687428096000.0)))))))));
+    cosT = 1.0 + t2 * (-0.5 + t2 * (1.0 / 24 + t2 * (-1.0 / 720 + t2 * (1.0 / 40320 +
+           t2 * (-1.0 / 3628800 + t2 * (1.0 / 479001600.0 + t2 * (-1.0 / 87178291200.0 +
+           t2 * (1.0 / 20922789888000.0))))))));
+}
+
 /// Radiance's getperpendicular(n, randomize = 1): the azimuth of the frame is
 /// random but not uniform (it leans toward the chosen axis), and Radiance 5
 /// draws it for every hemisphere, even with -u-.
@@ -76,6 +93,7 @@ std::size_t Index(int ns, int i, int j) {
 bool Collides(const HessianHemisphere& h, int i, int j, const Vec3& dir) {
     const double limit = kPi / (4.0 * h.ns);
     const double cosLimit = 1.0 - 0.5 * limit * limit;
+    const double cosLimit2 = cosLimit * cosLimit;
     for (int ii = std::max(0, i - 1); ii <= std::min(h.ns - 1, i + 1); ++ii) {
         for (int jj = std::max(0, j - 1); jj <= std::min(h.ns - 1, j + 1); ++jj) {
             if (ii == i && jj == j)
@@ -83,7 +101,9 @@ bool Collides(const HessianHemisphere& h, int i, int j, const Vec3& dir) {
             const HessianCell& c = h.At(ii, jj);
             if (c.samples == 0)
                 continue;
-            if (Dot(c.offset, dir) >= cosLimit * Length(c.offset))
+            // Dot >= cosLimit·|offset| (cosLimit > 0), squared to spare a sqrt.
+            const double d = Dot(c.offset, dir);
+            if (d > 0 && d * d >= cosLimit2 * LengthSquared(c.offset))
                 return true;
         }
     }
@@ -123,14 +143,16 @@ namespace detail {
 std::vector<double> NeighbourContrast(const HessianHemisphere& h) {
     const int ns = h.ns;
     std::vector<double> e(h.cells.size(), 0.0);
+    std::vector<double> bright(h.cells.size());
+    for (std::size_t k = 0; k < bright.size(); ++k) bright[k] = Bright(h.cells[k].radiance);
     for (int i = 0; i < ns; ++i) {
         for (int j = 0; j < ns; ++j) {
             double b[4];
             int n = 0;
-            if (i > 0) b[n++] = Bright(h.At(i - 1, j).radiance);
-            if (i + 1 < ns) b[n++] = Bright(h.At(i + 1, j).radiance);
-            if (j > 0) b[n++] = Bright(h.At(i, j - 1).radiance);
-            if (j + 1 < ns) b[n++] = Bright(h.At(i, j + 1).radiance);
+            if (i > 0) b[n++] = bright[Index(ns, i - 1, j)];
+            if (i + 1 < ns) b[n++] = bright[Index(ns, i + 1, j)];
+            if (j > 0) b[n++] = bright[Index(ns, i, j - 1)];
+            if (j + 1 < ns) b[n++] = bright[Index(ns, i, j + 1)];
             double mean = 0;
             for (int k = 0; k < n; ++k) mean += b[k];
             mean /= n;
@@ -268,26 +290,34 @@ int MonicRoots(double b, double c, double roots[2]) {
 DiscPoint SquareToDisc(double x, double y) {
     const double a = 2.0 * x - 1.0;
     const double b = 2.0 * y - 1.0;
-    double r, phi;
+    // φ lies in one of four quarter turns around the axes; within it φ is a
+    // multiple of π/2 plus or minus t = (π/4)·ratio with |t| <= π/4, so
+    // cos φ and sin φ are ±cos t and ±sin t, swapped on the y quarters.
+    double r, sinT, cosT;
     if (a > -b) {
-        if (a > b) {
+        if (a > b) {  // φ = t
             r = a;
-            phi = 0.25 * kPi * (b / a);
-        } else {
-            r = b;
-            phi = 0.25 * kPi * (2.0 - a / b);
+            SinCosQuarterTurn(0.25 * kPi * (b / a), sinT, cosT);
+            r *= kDiscScale;
+            return {r * cosT, r * sinT};
         }
-    } else {
-        if (a < b) {
-            r = -a;
-            phi = 0.25 * kPi * (4.0 + b / a);
-        } else {
-            r = -b;
-            phi = b != 0.0 ? 0.25 * kPi * (6.0 - a / b) : 0.0;
-        }
+        r = b;  // φ = π/2 − t
+        SinCosQuarterTurn(0.25 * kPi * (a / b), sinT, cosT);
+        r *= kDiscScale;
+        return {r * sinT, r * cosT};
     }
-    r *= 0.9999999999999;
-    return {r * std::cos(phi), r * std::sin(phi)};
+    if (a < b) {  // φ = π + t
+        r = -a;
+        SinCosQuarterTurn(0.25 * kPi * (b / a), sinT, cosT);
+        r *= kDiscScale;
+        return {-r * cosT, -r * sinT};
+    }
+    // φ = 3π/2 − t; the square's centre (a = b = 0) maps to the origin.
+    r = -b;
+    if (b == 0.0) return {r, 0.0 * r};
+    SinCosQuarterTurn(0.25 * kPi * (a / b), sinT, cosT);
+    r *= kDiscScale;
+    return {-r * sinT, -r * cosT};
 }
 
 int HessianDivisions(const HemisphereOptions& options) {
@@ -373,7 +403,8 @@ void EdgeSums::Add(const Vec3& r0, const Vec3& r1, const Vec3& n, double coeffic
     // which loses half its digits for the small angles between neighbours.
     const double rc = std::sqrt(cc);
     const double i1 = std::atan2(rc, Dot(r0, r1)) / rc;
-    const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 / cc;
+    const double icc = 1.0 / cc;
+    const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 * icc;
     const double j2 = (0.5 * (s0 - s1) - er0 * i2) * se;
     const Vec3 q = r0 * i2 + e * j2;
     const Vec3 nxe = Cross(n, e);
@@ -384,7 +415,7 @@ void EdgeSums::Add(const Vec3& r0, const Vec3& r1, const Vec3& n, double coeffic
     gradient[1] += coefficient * (nxe.y * i1 + q.y * gq);
     gradient[2] += coefficient * (nxe.z * i1 + q.z * gq);
 
-    const double i3 = (er1 * s1 * s1 - er0 * s0 * s0 + 3.0 * ee * i2) / (4.0 * cc);
+    const double i3 = (er1 * s1 * s1 - er0 * s0 * s0 + 3.0 * ee * i2) * 0.25 * icc;
     const double j3 = 0.25 * se * (s0 * s0 - s1 * s1) - er0 * se * i3;
     const double k3 = se * (i2 - i3 / s0 - 2.0 * er0 * j3);
     // The Hessian term is sym(nxe, q) + 2nc·i3·sym(r0, r0) + 2nc·k3·sym(e, e)
