@@ -93,19 +93,6 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options) {
 
 namespace {
 
-/// cos and sin of x for 0 <= x <= π/4, by their Taylor series to x^16
-/// (error below 2e-16): a fraction of the cost of std::sin and std::cos, which
-/// would otherwise be called once per hemisphere ray
-/// (docs/measured-choices.md).
-void SinCosSmall(double x, double& c, double& s) {
-    const double x2 = x * x;
-    s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-             x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800 + x2 * (-1.0 / 1307674368000))))))));
-    c = 1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 +
-        x2 * (-1.0 / 3628800 + x2 * (1.0 / 479001600 + x2 * (-1.0 / 87178291200 +
-        x2 * (1.0 / 20922789888000))))))));
-}
-
 /// Cosine-weighted directions in the divisions of a hemisphere: sin²θ is
 /// uniform within a row, φ within a column (§4.12). The azimuth of each
 /// column's start is tabulated once per hemisphere; the jitter within the

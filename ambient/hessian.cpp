@@ -42,20 +42,6 @@ constexpr int kAxisOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
 /// The disc radius scale that keeps lifted directions off the horizon.
 constexpr double kDiscScale = 0.9999999999999;
 
-/// sin t and cos t for |t| <= π/4 from their Taylor series through t¹⁷ and
-/// t¹⁶: the first terms left out are below 1e-17 relative, so the result is
-/// as exact as std::sin/std::cos, without libm's general range reduction
-/// (the concentric map runs once per hemisphere ray).
-inline void SinCosQuarterTurn(double t, double& sinT, double& cosT) {
-    const double t2 = t * t;
-    sinT = t * (1.0 + t2 * (-1.0 / 6 + t2 * (1.0 / 120 + t2 * (-1.0 / 5040 +
-           t2 * (1.0 / 362880 + t2 * (-1.0 / 39916800 + t2 * (1.0 / 6227020800.0 +
-           t2 * (-1.0 / 1307674368000.0 + t2 * (1.0 / 355687428096000.0)))))))));
-    cosT = 1.0 + t2 * (-0.5 + t2 * (1.0 / 24 + t2 * (-1.0 / 720 + t2 * (1.0 / 40320 +
-           t2 * (-1.0 / 3628800 + t2 * (1.0 / 479001600.0 + t2 * (-1.0 / 87178291200.0 +
-           t2 * (1.0 / 20922789888000.0))))))));
-}
-
 /// Radiance's getperpendicular(n, randomize = 1): the azimuth of the frame is
 /// random but not uniform (it leans toward the chosen axis), and Radiance 5
 /// draws it for every hemisphere, even with -u-.
@@ -297,25 +283,25 @@ DiscPoint SquareToDisc(double x, double y) {
     if (a > -b) {
         if (a > b) {  // φ = t
             r = a;
-            SinCosQuarterTurn(0.25 * kPi * (b / a), sinT, cosT);
+            SinCosSmall(0.25 * kPi * (b / a), cosT, sinT);
             r *= kDiscScale;
             return {r * cosT, r * sinT};
         }
         r = b;  // φ = π/2 − t
-        SinCosQuarterTurn(0.25 * kPi * (a / b), sinT, cosT);
+        SinCosSmall(0.25 * kPi * (a / b), cosT, sinT);
         r *= kDiscScale;
         return {r * sinT, r * cosT};
     }
     if (a < b) {  // φ = π + t
         r = -a;
-        SinCosQuarterTurn(0.25 * kPi * (b / a), sinT, cosT);
+        SinCosSmall(0.25 * kPi * (b / a), cosT, sinT);
         r *= kDiscScale;
         return {-r * cosT, -r * sinT};
     }
     // φ = 3π/2 − t; the square's centre (a = b = 0) maps to the origin.
     r = -b;
     if (b == 0.0) return {r, 0.0 * r};
-    SinCosQuarterTurn(0.25 * kPi * (a / b), sinT, cosT);
+    SinCosSmall(0.25 * kPi * (a / b), cosT, sinT);
     r *= kDiscScale;
     return {-r * sinT, -r * cosT};
 }
