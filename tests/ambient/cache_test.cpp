@@ -56,6 +56,25 @@ TEST(AmbientCache, WeightsAreInverseSplitSphereError) {
     EXPECT_NEAR(v->g, (40 * 0.5 + 10 * 0.3) / 50, 1e-12);
 }
 
+/// The candidates are gathered (and prefetched) before they are weighed: with
+/// more than fit the inline buffer (32), every one still counts, in order.
+TEST(AmbientCache, EveryOverlappingRecordCountsHoweverMany) {
+    for (const int n : {1, 31, 32, 33, 100}) {
+        AmbientCache cache = MakeCache();
+        double sum = 0;
+        for (int k = 0; k < n; ++k) {
+            const double value = 0.1 + 0.01 * k;
+            ASSERT_TRUE(cache.Add(FloorRecord({0, 0, 0}, value, 1)));
+            sum += value;
+        }
+        int used = 0;
+        const auto v = cache.Interpolate(FloorQuery({0.02, 0, 0}), &used);
+        ASSERT_TRUE(v);
+        EXPECT_EQ(used, n);
+        EXPECT_NEAR(v->g, sum / n, 1e-12) << n;  // equal weights: the mean
+    }
+}
+
 /// Radiance 5's weights (RecordWeighting::Hat): (1 − δ/θmax)(1 − ε/a), with
 /// ε the elliptical distance alone and δ the chord between the normals.
 TEST(AmbientCache, HatWeightsAsRadiance5) {
