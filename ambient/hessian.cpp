@@ -375,20 +375,48 @@ double Matrix3::Form(const Vec3& a, const Vec3& b) const {
 
 namespace detail {
 
-void EdgeSums::Add(const Vec3& r0, const Vec3& r1, const Vec3& n, double coefficient) {
+double AtanOverX(double z) {
+    // Σ c_k z^k with c_k = (−1)^k/(2k+1), k = 0…13, by Estrin's scheme: the
+    // terms pair up in a tree four deep instead of a Horner chain of
+    // thirteen, so independent edges overlap in the pipeline.
+    constexpr double c[14] = {1.0,       -1.0 / 3,  1.0 / 5,  -1.0 / 7,  1.0 / 9,
+                              -1.0 / 11, 1.0 / 13,  -1.0 / 15, 1.0 / 17, -1.0 / 19,
+                              1.0 / 21,  -1.0 / 23, 1.0 / 25,  -1.0 / 27};
+    const double z2 = z * z;
+    const double z4 = z2 * z2;
+    const double z8 = z4 * z4;
+    const double p0 = c[0] + c[1] * z, p1 = c[2] + c[3] * z, p2 = c[4] + c[5] * z;
+    const double p3 = c[6] + c[7] * z, p4 = c[8] + c[9] * z, p5 = c[10] + c[11] * z;
+    const double p6 = c[12] + c[13] * z;
+    const double q0 = p0 + p1 * z2, q1 = p2 + p3 * z2, q2 = p4 + p5 * z2;
+    const double r0 = q0 + q1 * z4, r1 = q2 + p6 * z4;
+    return r0 + r1 * z8;
+}
+
+void EdgeSums::Add(const Vec3& r0, const Vec3& r1, double s0, double s1, const Vec3& n,
+                   double coefficient) {
     const Vec3 e = r1 - r0;
     const Vec3 c = Cross(r0, r1);
     const double cc = LengthSquared(c);
     const double ee = LengthSquared(e);
     const double er0 = Dot(e, r0);
     const double er1 = Dot(e, r1);
-    const double s0 = 1.0 / LengthSquared(r0);
-    const double s1 = 1.0 / LengthSquared(r1);
     const double se = 1.0 / ee;
     // I1 = angle(r0, r1)/|c|; atan2 rather than Radiance's acos of the cosine,
     // which loses half its digits for the small angles between neighbours.
-    const double rc = std::sqrt(cc);
-    const double i1 = std::atan2(rc, Dot(r0, r1)) / rc;
+    // Those angles are mostly below 14° (tan <= 1/4), where the series gives
+    // I1 = atan(x)/x · 1/(r0·r1) with x² = |c|²/(r0·r1)², as exact and without
+    // std::atan2, the square root or two divisions (three edges per
+    // hemisphere ray).
+    const double r01 = Dot(r0, r1);
+    double i1;
+    if (r01 > 0 && cc <= 0.0625 * r01 * r01) {
+        const double ir = 1.0 / r01;
+        i1 = AtanOverX(cc * ir * ir) * ir;
+    } else {
+        const double rc = std::sqrt(cc);
+        i1 = std::atan2(rc, r01) / rc;
+    }
     const double icc = 1.0 / cc;
     const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 * icc;
     const double j2 = (0.5 * (s0 - s1) - er0 * i2) * se;
@@ -470,6 +498,10 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
         return farthest(Index(ns, i + 1, j + 1), Index(ns, i + 1, j), Index(ns, i, j + 1));
     };
     detail::EdgeSums sums;
+    std::vector<double> inverseSquare(h.cells.size());
+    for (std::size_t k = 0; k < inverseSquare.size(); ++k) {
+        inverseSquare[k] = 1.0 / LengthSquared(h.cells[k].offset);
+    }
     // Σ_T Y_T Σ_{edges of T} is summed per edge: an inner edge is traversed
     // once each way by its two triangles, so it counts (Y_T − Y_T') times and
     // drops out where both have the same brightness (Radiance's book-keeping
@@ -477,7 +509,9 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
     auto edge = [&](int ia, int ja, int ib, int jb, double coefficient) {
         if (coefficient == 0)
             return;
-        sums.Add(h.At(ia, ja).offset, h.At(ib, jb).offset, n, coefficient);
+        const std::size_t a = Index(ns, ia, ja), b = Index(ns, ib, jb);
+        sums.Add(h.cells[a].offset, h.cells[b].offset, inverseSquare[a], inverseSquare[b], n,
+                 coefficient);
     };
     const int last = ns - 1;
     for (int i = 0; i < ns; ++i) {

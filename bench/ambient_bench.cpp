@@ -15,6 +15,7 @@
 
 #include "ambient/cache.h"
 #include "ambient/hemisphere.h"
+#include "ambient/hessian.h"
 #include "ambient/limits.h"
 #include "core/random.h"
 #include "octree/sphere_octree.h"
@@ -103,6 +104,30 @@ void BM_HemisphereSampling(benchmark::State& state) {
                                                      benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_HemisphereSampling)->Arg(128)->Arg(512)->Arg(1024);
+
+// Radiance 5's square-grid hemisphere and its record (Hessian, ellipse,
+// gradients, corral) at -ad N -as N/2, less the tracing: the per-ray
+// overhead that the -ah+ method adds to the cost of its rays.
+void BM_HessianRecord(benchmark::State& state) {
+    rt::HemisphereOptions options;
+    options.divisions = static_cast<int>(state.range(0));
+    options.superSamples = static_cast<int>(state.range(0) / 2);
+    rt::Rng rng(6);
+    const rt::AmbientTraceFn trace = Analytic;
+    const rt::AmbientLimits limits = rt::AmbientLimits::FromResolution(256, 5.56);
+    std::uint64_t rays = 0;
+    for (auto _ : state) {
+        const rt::HessianHemisphere h = rt::SampleHessianHemisphere(
+            {1, 2, 0}, {0, 0, 1}, options, rt::HessianFarDistance(5.56), rng, trace);
+        auto record = rt::MakeHessianRecord(h, 0, 1.0, 0.1, limits);
+        rays += static_cast<std::uint64_t>(h.raysTraced);
+        benchmark::DoNotOptimize(record);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["samples/s"] = benchmark::Counter(static_cast<double>(rays),
+                                                     benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_HessianRecord)->Arg(128)->Arg(512)->Arg(1024);
 
 void BM_RecordCreation(benchmark::State& state) {
     rt::HemisphereOptions options;  // -ad 1024 -as 512
