@@ -62,9 +62,10 @@ Vec3 RandomPerpendicular(const Vec3& n, Rng& rng) {
     return Normalize(Cross(v, n));
 }
 
-/// The cosine-weighted direction of square point ((j + xi1)/ns, (i + xi0)/ns).
-Vec3 CellDirection(const Frame& frame, int ns, int i, int j, double xi0, double xi1) {
-    const DiscPoint p = SquareToDisc((j + xi1) / ns, (i + xi0) / ns);
+/// The cosine-weighted direction of square point ((j + xi1)/ns, (i + xi0)/ns),
+/// given invNs = 1/ns (a multiplication where two divisions were, per ray).
+Vec3 CellDirection(const Frame& frame, double invNs, int i, int j, double xi0, double xi1) {
+    const DiscPoint p = SquareToDisc((j + xi1) * invNs, (i + xi0) * invNs);
     const double z = std::sqrt(std::max(0.0, 1.0 - p.x * p.x - p.y * p.y));
     return frame.u * p.x + frame.v * p.y + frame.n * z;
 }
@@ -198,12 +199,13 @@ namespace {
 void SuperSample(HessianHemisphere& h, int count, double farDistance, Rng& rng,
                  AmbientTraceRef trace) {
     const std::vector<int> counts = detail::AllotSuperSamples(h, count, rng);
+    const double invNs = 1.0 / h.ns;
     for (int i = 0; i < h.ns; ++i) {
         for (int j = 0; j < h.ns; ++j) {
             for (int n = 1; n <= counts[Index(h.ns, i, j)]; ++n) {
                 const double xi0 = rng.Uniform();
                 const double xi1 = rng.Uniform();
-                const Vec3 dir = CellDirection(h.frame, h.ns, i, j, xi0, xi1);
+                const Vec3 dir = CellDirection(h.frame, invNs, i, j, xi0, xi1);
                 if (!SampleCell(h, i, j, dir, n, farDistance, trace)) break;
                 ++h.superSamples;
             }
@@ -327,6 +329,7 @@ HessianHemisphere SampleHessianHemisphere(const Vec3& point, const Vec3& normal,
     const int ns = HessianDivisions(options);
     h.ns = ns;
     h.cells.assign(static_cast<std::size_t>(ns) * static_cast<std::size_t>(ns), HessianCell{});
+    const double invNs = 1.0 / ns;
 
     // Radiance's order, last cell first: the collision test looks at whichever
     // neighbours are already sampled.
@@ -337,7 +340,7 @@ HessianHemisphere SampleHessianHemisphere(const Vec3& point, const Vec3& normal,
             for (int draw = 0; draw <= kMaxRedraws; ++draw) {
                 const double xi0 = rng.Uniform();
                 const double xi1 = rng.Uniform();
-                dir = CellDirection(h.frame, ns, i, j, xi0, xi1);
+                dir = CellDirection(h.frame, invNs, i, j, xi0, xi1);
                 if (!Collides(h, i, j, dir))
                     break;
             }
