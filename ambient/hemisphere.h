@@ -47,7 +47,31 @@ struct HemisphereOptions {
                              // at most one per division on average (nt·np)
     double weight = 1;       // record weight: sample counts scale with it (0.5^level)
     bool caching = true;     // -aa > 0: at least 3 rows; without cache at least 1
+    /// Hessian records below the first level (IrradianceCache): the relative
+    /// standard error (-aa) at or above which a first pass takes all its
+    /// extra samples; 0 (the first level, and the classic records, which
+    /// IrradianceCache never gives a target) takes them always. See
+    /// SuperSamplesForContrast.
+    double contrastTarget = 0;
 };
+
+/// How many of `budget` extra samples a hemisphere takes whose first pass's
+/// neighbour contrasts (the super-sampling priorities, brightness²) sum to
+/// `contrastSum` over `cells` divisions of mean brightness `meanBright`: all
+/// of them without a target (`target` <= 0), else budget·min(1, V²/target²)
+/// rounded at random (expectation exact), where V² = contrastSum /
+/// (cells·meanBright)² estimates the relative variance of the hemisphere's
+/// mean.
+///
+/// Why: below the first level a record's error reaches the answer only
+/// through the records that look at it, averaged with many others, so extra
+/// samples pay only where the first pass is still rough by the relative
+/// measure the cache already accepts from interpolation (-aa): a window or a
+/// sunlit patch in view, not a smooth room. Below the cap each division gets
+/// budget·priority/contrastSum = priority·budget/(cells·meanBright·target)²
+/// extra samples: its neighbours' contrast, not the sum over all, decides.
+int SuperSamplesForContrast(int budget, double contrastSum, double cells, double meanBright,
+                            double target, Rng& rng);
 
 struct Hemisphere {
     Rgb value;                // Ē: cosine-weighted mean incident radiance (= irradiance/π)

@@ -151,7 +151,8 @@ std::vector<double> NeighbourContrast(const HessianHemisphere& h) {
     return e;
 }
 
-std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& rng) {
+std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& rng,
+                                   const HemisphereOptions& options) {
     const std::vector<double> e = NeighbourContrast(h);
     std::vector<int> counts(e.size(), 0);
     // The cells form a checkerboard whose every cell has its neighbours in
@@ -167,7 +168,7 @@ std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& r
     const int evenCount = static_cast<int>(
         std::floor(static_cast<double>(count) * evenCells / cells + rng.Uniform()));
     for (int colour = 0; colour < 2; ++colour) {
-        const int budget = colour == 0 ? evenCount : count - evenCount;
+        int budget = colour == 0 ? evenCount : count - evenCount;
         double total = 0;
         for (int i = 0; i < h.ns; ++i) {
             for (int j = (i + colour) % 2; j < h.ns; j += 2) total += e[Index(h.ns, i, j)];
@@ -175,6 +176,21 @@ std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& r
         // Systematic sampling (one random offset over the cumulative shares):
         // each cell its share in expectation, exactly `budget` in all.
         const double offset = rng.Uniform();
+        if (options.contrastTarget > 0) {
+            // The whole hemisphere's contrast and mean estimated from the
+            // other colour's samples alone (this colour's priorities come from
+            // them too), so no cell's count depends on a cell of its colour.
+            const int colourCells = colour == 0 ? evenCells : cells - evenCells;
+            double otherBright = 0;
+            for (int i = 0; i < h.ns; ++i) {
+                for (int j = (i + colour + 1) % 2; j < h.ns; j += 2) {
+                    otherBright += Bright(h.At(i, j).radiance);
+                }
+            }
+            budget = SuperSamplesForContrast(budget, total * cells / colourCells, cells,
+                                             otherBright / (cells - colourCells),
+                                             options.contrastTarget, rng);
+        }
         if (!(total > 0) || budget <= 0) continue;
         double cumulative = 0;
         for (int i = 0; i < h.ns; ++i) {
@@ -196,9 +212,9 @@ namespace {
 /// Radiance's ambsupersamp(): `count` extra samples shared out in one pass
 /// over the cells in proportion to their contrast estimates, each cell's share
 /// rounded at random; never more than `count` in total.
-void SuperSample(HessianHemisphere& h, int count, double farDistance, Rng& rng,
-                 AmbientTraceRef trace) {
-    const std::vector<int> counts = detail::AllotSuperSamples(h, count, rng);
+void SuperSample(HessianHemisphere& h, int count, const HemisphereOptions& options,
+                 double farDistance, Rng& rng, AmbientTraceRef trace) {
+    const std::vector<int> counts = detail::AllotSuperSamples(h, count, rng, options);
     const double invNs = 1.0 / h.ns;
     for (int i = 0; i < h.ns; ++i) {
         for (int j = 0; j < h.ns; ++j) {
@@ -358,7 +374,7 @@ HessianHemisphere SampleHessianHemisphere(const Vec3& point, const Vec3& normal,
     const double extraWanted = std::max(0.0, options.superSamples * options.weight);
     const int extra = static_cast<int>(std::min(extraWanted, static_cast<double>(cells)) + 0.5);
     if (h.complete && cells >= kMinSuperSampleCells && extra >= kMinSuperSamples)
-        SuperSample(h, extra, farDistance, rng, trace);
+        SuperSample(h, extra, options, farDistance, rng, trace);
 
     Rgb sum;
     for (const HessianCell& c : h.cells)

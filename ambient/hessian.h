@@ -225,7 +225,11 @@ std::vector<double> NeighbourContrast(const HessianHemisphere& hemisphere);
 /// of the grid's checkerboard a share by its number of cells, spread by
 /// NeighbourContrast with systematic sampling (random offsets from `rng`).
 /// A cell's count depends on no cell of its own colour, itself included.
-std::vector<int> AllotSuperSamples(const HessianHemisphere& hemisphere, int count, Rng& rng);
+/// With `options`' contrast target (records below the first level), each
+/// colour's share is cut by SuperSamplesForContrast, the whole hemisphere's
+/// contrast and mean brightness estimated from the other colour's samples.
+std::vector<int> AllotSuperSamples(const HessianHemisphere& hemisphere, int count, Rng& rng,
+                                   const HemisphereOptions& options = {});
 
 }  // namespace detail
 

@@ -475,6 +475,29 @@ TEST(Hemisphere, SuperSamplingReducesErrorAtAnEdge) {
     EXPECT_LT(rmsSuper, 0.7 * rmsPlain);
 }
 
+// The budget rule for records below the first level: all of -as·weight
+// without a target or where the estimated relative error V = sqrt(sum)/(n·B)
+// reaches it, else the budget times (V/target)², rounded at random so that
+// the expectation is exact.
+TEST(Hemisphere, SuperSamplesForContrastScalesWithTheRelativeError) {
+    Rng rng(4);
+    // 100 cells of mean brightness 2: V² = sum/(200²); target 0.1 → V²/T² = sum/400.
+    EXPECT_EQ(SuperSamplesForContrast(512, 100.0, 100, 2.0, 0.0, rng), 512);   // no target
+    EXPECT_EQ(SuperSamplesForContrast(512, 400.0, 100, 2.0, 0.1, rng), 512);   // V = T
+    EXPECT_EQ(SuperSamplesForContrast(512, 4000.0, 100, 2.0, 0.1, rng), 512);  // rougher
+    EXPECT_EQ(SuperSamplesForContrast(512, 100.0, 100, 0.0, 0.1, rng), 512);   // black: no V
+    EXPECT_EQ(SuperSamplesForContrast(512, 0.0, 100, 2.0, 0.1, rng), 0);       // smooth
+    EXPECT_EQ(SuperSamplesForContrast(0, 100.0, 100, 2.0, 0.1, rng), 0);
+    // V²/T² = 0.3: 153.6 on average, 153 or 154 each time.
+    double sum = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const int n = SuperSamplesForContrast(512, 120.0, 100, 2.0, 0.1, rng);
+        ASSERT_TRUE(n == 153 || n == 154) << n;
+        sum += n;
+    }
+    EXPECT_NEAR(sum / 1000, 153.6, 0.05);
+}
+
 TEST(Hemisphere, SuperSamplingNeedsEnoughSamplesAndRows) {
     const auto trace = CapEnvironment(kTiltedNormal, 0.5, 1.0);
     Rng rng(3);

@@ -1089,15 +1089,21 @@ TEST(HessianSuperSampling, ACellsShareDoesNotDependOnItsOwnSample) {
     std::mt19937_64 gen(5);
     std::uniform_real_distribution<double> u(0, 1);
     for (HessianCell& c : h.cells) c.radiance = Rgb::Grey(u(gen) < 0.2 ? 10.0 : 0.1);
+    // Also with the budget cut by the contrast of the other colour (deeper
+    // records, SuperSamplesForContrast): a target of 0.25 keeps it below the cap.
+    HemisphereOptions deeper;
+    deeper.contrastTarget = 0.25;
+    for (const HemisphereOptions& options : {HemisphereOptions{}, deeper})
     for (int cell : {40, 41, 0, 9}) {
         Rng a(7), b(7);
-        const std::vector<int> before = detail::AllotSuperSamples(h, 60, a);
+        const std::vector<int> before = detail::AllotSuperSamples(h, 60, a, options);
         HessianHemisphere changed = h;
         changed.cells[static_cast<std::size_t>(cell)].radiance = Rgb::Grey(50);
-        const std::vector<int> after = detail::AllotSuperSamples(changed, 60, b);
-        int total = 0, moved = 0;
+        const std::vector<int> after = detail::AllotSuperSamples(changed, 60, b, options);
+        int total = 0, moved = 0, totalBefore = 0;
         for (int k = 0; k < 81; ++k) {
             total += after[static_cast<std::size_t>(k)];
+            totalBefore += before[static_cast<std::size_t>(k)];
             const bool sameColour = (k / 9 + k % 9) % 2 == (cell / 9 + cell % 9) % 2;
             if (sameColour) {
                 EXPECT_EQ(after[static_cast<std::size_t>(k)], before[static_cast<std::size_t>(k)])
@@ -1106,7 +1112,12 @@ TEST(HessianSuperSampling, ACellsShareDoesNotDependOnItsOwnSample) {
                 moved += after[static_cast<std::size_t>(k)] != before[static_cast<std::size_t>(k)];
             }
         }
-        EXPECT_EQ(total, 60);
+        if (options.contrastTarget > 0) {
+            EXPECT_LT(totalBefore, 60);  // the cut applies
+            EXPECT_GT(totalBefore, 0);
+        } else {
+            EXPECT_EQ(total, 60);
+        }
         EXPECT_GT(moved, 0) << cell;  // the neighbours' shares did change
     }
 }

@@ -245,6 +245,47 @@ TEST(IrradianceCache, LeakTestRejectsRecordsBehindAWall) {
     EXPECT_EQ(leakRays, before);
 }
 
+/// A smooth environment, brighter toward the zenith: some contrast between
+/// neighbouring cells, far less than -aa's 10 % relative error.
+struct Smooth {
+    int rays = 0;
+    std::optional<AmbientSample> operator()(const Vec3& d, const AmbientSampleShare&) {
+        ++rays;
+        return AmbientSample{Rgb::Grey(1.0 + 0.2 * d.z), 3.0};
+    }
+};
+
+/// Rays one new Hessian or classic record takes at `level` in Smooth, at
+/// -ad 256 -as 128.
+int SmoothRecordRays(RecordMethod method, int level) {
+    IrradianceSettings settings = Settings();
+    settings.method = method;
+    settings.superSamples = 128;
+    const IrradianceCache cache(settings, Store());
+    IrradianceThread thread;
+    thread.depth = level;
+    IrradianceCounters counters;
+    Rng rng(9);
+    Smooth env;
+    AmbientQuery q = At({0, 0, 0});
+    q.rayWeight = std::pow(0.5, level);
+    EXPECT_TRUE(cache.Evaluate(q, 0.5, thread, counters, rng, env, NeverOccluded).value);
+    return env.rays;
+}
+
+// Hessian records below the first level take extra samples only where their
+// first pass is rough by -aa (SuperSamplesForContrast): none in a smooth
+// environment. The first level, and the classic records at any level, keep
+// Radiance's -as·weight.
+TEST(IrradianceCache, DeeperHessianRecordsSuperSampleOnlyWhereRough) {
+    // Level 0: ns = 16, 256 cells, 128 extra. Level 1: ns = round(sqrt(128)) = 11,
+    // 121 cells, 64 extra.
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 0), 256 + 128);
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 1), 121);
+    // Classic level 1: rows = round(sqrt(128/π)) = 6, 19 columns, 64 extra.
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 6 * 19 + 64);
+}
+
 TEST(IrradianceCache, DeeperSampleFractionIsTheShareSquaredWithAFloor) {
     EXPECT_EQ(IrradianceCache::DeeperSampleFraction(1.0), 1.0);
     EXPECT_DOUBLE_EQ(IrradianceCache::DeeperSampleFraction(0.8), 0.64);
