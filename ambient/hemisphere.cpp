@@ -354,18 +354,6 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
         NeighbourPriorities(divs);
         double total = 0;
         for (const Division& d : divs.Cells()) total += d.error;
-        // The first pass's mean brightness includes each division's own
-        // sample, so below the cap a division's count depends on it by
-        // O(1/divisions), as the classic priorities' sum always did; the
-        // Hessian sampler avoids both with its checkerboard.
-        int take = extra;
-        if (options.contrastTarget > 0) {
-            const double cells = static_cast<double>(rows) * columns;
-            double meanBright = 0;
-            for (const Division& d : divs.Cells()) meanBright += Bright(d.mean);
-            take = SuperSamplesForContrast(extra, total, cells, meanBright / cells,
-                                           options.contrastTarget, rng);
-        }
         // Extra samples in proportion to priority, fixed before any is taken.
         // Systematic sampling (one random offset over the cumulative shares)
         // gives each division its share in expectation and exactly `extra`
@@ -374,7 +362,7 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
         double cumulative = 0;
         for (int i = 0; total > 0 && i < divs.Size(); ++i) {
             const double before = std::floor(cumulative + offset);
-            cumulative += take * divs[i].error / total;
+            cumulative += extra * divs[i].error / total;
             const int count = static_cast<int>(std::floor(cumulative + offset) - before);
             const int t = i / columns;
             const int p = i % columns;

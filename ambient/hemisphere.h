@@ -49,9 +49,9 @@ struct HemisphereOptions {
     bool caching = true;     // -aa > 0: at least 3 rows; without cache at least 1
     /// Hessian records below the first level (IrradianceCache): the relative
     /// standard error (-aa) at or above which a first pass takes all its
-    /// extra samples; 0 (the first level, and the classic records, which
-    /// IrradianceCache never gives a target) takes them always. See
-    /// SuperSamplesForContrast.
+    /// extra samples; 0 (the first level) takes them always. Only the
+    /// Hessian sampler reads it (SuperSamplesForContrast); the classic
+    /// sampler keeps Radiance's -as·weight (README, Differences).
     double contrastTarget = 0;
 };
 
