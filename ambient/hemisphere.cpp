@@ -385,13 +385,6 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
             h.horizonInverseDistance[static_cast<size_t>(p)] =
                 divs.At(rows - 1, p).nearestInverseDistance;
         }
-        // Rows with sin²θ < 1/4, at least the first.
-        const int zenithRows = std::max(1, rows / 4);
-        double zenith = 0;
-        for (int t = 0; t < zenithRows; ++t) {
-            for (int p = 0; p < columns; ++p) zenith += divs.At(t, p).nearestInverseDistance;
-        }
-        h.zenithInverseDistance = zenith / (static_cast<double>(zenithRows) * columns);
     }
 
     Rgb sum;

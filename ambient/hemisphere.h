@@ -87,9 +87,8 @@ struct Hemisphere {
     Vec3 dirGradient;         // relative rotational gradient, tangent to n (1/radian)
     /// For the leak test's corral bits (ambient/leak.h), when complete and
     /// caching: per column, the nearest hit (largest 1/d) in its division next
-    /// to the horizon; and the mean nearest 1/d of the divisions within 30° of n.
+    /// to the horizon.
     std::vector<double> horizonInverseDistance;
-    double zenithInverseDistance = 0;
 };
 
 /// Ward's division counts for `options` (radiance-notes.md §4.12): rows

@@ -130,8 +130,7 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
                                            store_->limits());
             if (out.record) {
                 const double a = settings_.accuracy;
-                out.record->corral = CorralBits(h, out.record->radius[0] * a,
-                                                1.0 / store_->limits().BehindTolerance(a));
+                out.record->corral = CorralBits(h, out.record->radius[0] * a);
             }
         }
     }

@@ -17,13 +17,6 @@ double Azimuth(double x, double y) {
     return a < 0 ? a + 2 * kPi : a;
 }
 
-/// Radiance's "ceiling too low" rule, shared by both kinds of hemisphere: no
-/// corral when what lies overhead (mean 1/d `zenith`) is nearer on average
-/// than the validity radius, or nearer than 1/maxInverseDistance.
-bool CeilingTooLow(double zenith, double validityRadius, double maxInverseDistance) {
-    return zenith * validityRadius >= 1 || zenith >= maxInverseDistance;
-}
-
 /// Bits of every sector the azimuth range [start, end) overlaps, for
 /// 0 <= start < end <= 2π.
 std::uint32_t SectorBits(double start, double end) {
@@ -46,18 +39,19 @@ std::uint32_t WrappedSectorBits(double start, double end) {
 }
 }  // namespace
 
-// Radiance 5 also skips occluders nearer than minarad·a (1/maxInverseDistance),
-// so a record 5 cm from a thin wall still served queries 5 cm behind it, in a
-// closed room that must stay black (tests/data/leak). The test ray is exact,
-// so flagging those directions too costs rays, never accuracy: both corrals
-// below flag them.
+// Radiance 5 skips the corral when what lies overhead is near (its "ceiling
+// too low" rule), and skips occluders nearer than minarad·a, so a record 5 cm
+// from a thin wall still served queries 5 cm behind it, in a closed room that
+// must stay black (tests/data/leak). The test ray is exact, so flagging those
+// directions too costs rays, never accuracy: neither corral below skips them.
 
-std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius,
-                         double maxInverseDistance) {
+std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius) {
     const auto& horizon = hemisphere.horizonInverseDistance;
     if (!hemisphere.complete || horizon.empty()) return 0;
-    const double zenith = hemisphere.zenithInverseDistance;
-    if (CeilingTooLow(zenith, validityRadius, maxInverseDistance)) return 0;
+    // No "ceiling too low" rule, as for the Hessian corral below: a sensor
+    // 5 cm outside a wall sees the wall over much of its zenith, and when
+    // -ar clamps its record's radius up that record reached through the wall
+    // into the closed room for some seeds (tests/data/leak).
     const int columns = static_cast<int>(horizon.size());
     std::uint32_t bits = 0;
     for (int p = 0; p < columns; ++p) {

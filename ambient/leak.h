@@ -41,12 +41,9 @@ struct LeakTest {
 /// [kπ/16, (k+1)π/16) from u, is set where a sample next to the horizon hit
 /// something closer than the validity radius, that is, where a wall may stand
 /// between the record and a query it would accept (however close: unlike
-/// Radiance 5, see leak.cpp). Zero (no test needed) when the hemisphere is
-/// incomplete, when what lies within 30° of the normal is nearer on average
-/// than the validity radius, or nearer than 1/maxInverseDistance (Radiance's
-/// minarad·a + 0.001).
-std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius,
-                         double maxInverseDistance);
+/// Radiance 5, and whatever lies overhead: see leak.cpp). Zero (no test
+/// needed) when the hemisphere is incomplete.
+std::uint32_t CorralBits(const Hemisphere& hemisphere, double validityRadius);
 
 /// The same for a Radiance 5 hemisphere (ambcorral, §4.7 step 7) and a record
 /// with unit u-axis `u` (v = n × u) and validity semi-axes `validityRadius0`

@@ -42,24 +42,23 @@ Hemisphere HorizonWall(int columns, int wall, double distance) {
     h.frame = Frame{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     h.horizonInverseDistance.assign(static_cast<size_t>(columns), 0.0);
     h.horizonInverseDistance[static_cast<size_t>(wall)] = 1 / distance;
-    h.zenithInverseDistance = 0.1;  // a ceiling 10 away
     return h;
 }
 
 TEST(Corral, BitsWhereAWallStandsInsideTheValidityRadius) {
     // 32 columns: column 4 spans azimuths [π/4, 5π/16), that is sector 4.
-    const std::uint32_t bits = CorralBits(HorizonWall(32, 4, 0.5), 1.0, 100);
+    const std::uint32_t bits = CorralBits(HorizonWall(32, 4, 0.5), 1.0);
     EXPECT_EQ(bits, 1u << 4);
     // 8 columns: column 1 spans [π/4, π/2), sectors 4 to 7.
-    EXPECT_EQ(CorralBits(HorizonWall(8, 1, 0.5), 1.0, 100), 0xF0u);
+    EXPECT_EQ(CorralBits(HorizonWall(8, 1, 0.5), 1.0), 0xF0u);
     // Beyond the validity radius a wall sets nothing; one touching the record
-    // (closer than 1/maxInverseDistance, which Radiance 5 skips) does.
-    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 2.0), 1.0, 100), 0u);
-    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 0.005), 1.0, 100), 1u << 4);
-    // A ceiling nearer than the validity radius: no corral at all.
-    Hemisphere low = HorizonWall(32, 4, 0.5);
-    low.zenithInverseDistance = 2;
-    EXPECT_EQ(CorralBits(low, 1.0, 100), 0u);
+    // (closer than minarad·a, which Radiance 5 skips) does.
+    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 2.0), 1.0), 0u);
+    EXPECT_EQ(CorralBits(HorizonWall(32, 4, 0.005), 1.0), 1u << 4);
+    // Incomplete: none.
+    Hemisphere partial = HorizonWall(32, 4, 0.5);
+    partial.complete = false;
+    EXPECT_EQ(CorralBits(partial, 1.0), 0u);
 }
 
 /// A complete 8 × 8 Radiance 5 hemisphere around +z (u = +x) that sees

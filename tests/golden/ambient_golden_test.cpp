@@ -144,15 +144,25 @@ TEST(LeakTest, ClosedDarkRoomStaysBlack) {
 /// ground first (their records see the wall 5 cm away) and then inside.
 /// Radiance 5's corral rule ignores occluders that near a record, so the
 /// inside takes the outside's light; lazyrad flags them.
+///
+/// Several seeds: whether a record flags the wall depends on where its
+/// samples fall, and Radiance's "ceiling too low" rule (which the classic
+/// corral kept until it was found here) let seeds 1 and 3 leak while seed 0
+/// stayed black.
 TEST(LeakTest, SensorsNearTheWallInsideStayBlack) {
     for (const char* method : kMethods) {
         for (const char* ar : {"-ar 16", "-ar 64"}) {
-            const auto rows = RunRows(std::string(method) + "-I -ab 2 -aa .2 -ad 256 -as 0 " + ar +
-                                          " " + kSource + "/tests/data/leak/dark_room.rad",
-                                      "tests/data/leak/near_wall.pts");
-            ASSERT_EQ(rows.size(), 9u);
-            for (size_t i = 0; i < 4; ++i) EXPECT_GT(Luminance(rows[i]), 1.0) << method << ar << i;
-            for (size_t i = 4; i < 9; ++i) EXPECT_EQ(Luminance(rows[i]), 0.0) << method << ar << i;
+            for (const char* seed : {"-seed 0 ", "-seed 1 ", "-seed 2 ", "-seed 3 "}) {
+                const auto rows =
+                    RunRows(std::string(method) + seed + "-I -ab 2 -aa .2 -ad 256 -as 0 " + ar +
+                                " " + kSource + "/tests/data/leak/dark_room.rad",
+                            "tests/data/leak/near_wall.pts");
+                ASSERT_EQ(rows.size(), 9u);
+                for (size_t i = 0; i < 4; ++i)
+                    EXPECT_GT(Luminance(rows[i]), 1.0) << method << seed << ar << i;
+                for (size_t i = 4; i < 9; ++i)
+                    EXPECT_EQ(Luminance(rows[i]), 0.0) << method << seed << ar << i;
+            }
         }
     }
 }
