@@ -59,22 +59,37 @@ double IrradianceCache::DeeperSampleFraction(double share) {
     return std::max(kMinDeeperFraction, share * share);
 }
 
+double IrradianceCache::FirstLevelFraction(int bounces, int firstLevelRecords,
+                                           int deeperRecords) {
+    if (bounces < 2 || firstLevelRecords <= 0 || deeperRecords <= 0) return 1;
+    const double ratio = double(deeperRecords) / double(firstLevelRecords);
+    return std::clamp(kFirstLevelBoost * std::sqrt(ratio / kFullBoostRatio), 1.0,
+                      kFirstLevelBoost);
+}
+
 double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
                                        const IrradianceThread& thread,
                                        const OtherRadianceRef* otherRadiance) const {
-    if (level <= 0 || !otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
-        return 1;
+    if (level <= 0) {
+        int first = 0, deeper = 0;
+        for (size_t l = 0; l < thread.madeBright.size(); ++l) {
+            (l == 0 ? first : deeper) += thread.madeBright[l].second;
+        }
+        return FirstLevelFraction(settings_.bounces, first, deeper);
+    }
+    if (!otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
+        return kDeeperScale;
     }
     const auto [sum, count] = thread.madeBright[static_cast<size_t>(level)];
-    if (count < kShareGuessRecords) return 1;
+    if (count < kShareGuessRecords) return kDeeperScale;
     // The ambient term's guess: the material's coefficient times the level's
     // typical Ē, from records made before this one (not from this record's
     // own samples, so that how many it takes cannot depend on what they saw,
     // which would bias it).
     const double ambient = coefficientIntensity * sum / count;
     const double other = (*otherRadiance)();
-    if (!(ambient > 0) || !(other > 0)) return 1;
-    return DeeperSampleFraction(ambient / (ambient + other));
+    if (!(ambient > 0) || !(other > 0)) return kDeeperScale;
+    return kDeeperScale * DeeperSampleFraction(ambient / (ambient + other));
 }
 
 IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, double weight,

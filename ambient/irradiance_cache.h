@@ -91,6 +91,9 @@ struct IrradianceSettings {
     /// Hessian records: hit points farther than this (scene units) are stored
     /// this far (HessianFarDistance of the scene cube).
     double farDistance = HessianFarDistance(1.0);
+    /// -ab: with two or more bounces, first-level records may take more
+    /// samples than -ad and deeper ones fewer (FirstLevelFraction).
+    int bounces = 1;
 };
 
 /// What one hemisphere ray needs besides its direction: how its value will
@@ -154,6 +157,30 @@ public:
     /// level is never reduced: its error is the answer's own.
     static double DeeperSampleFraction(double share);
     static constexpr double kMinDeeperFraction = 0.25;
+
+    /// Samples moved from the deeper records to the first level's (README,
+    /// Differences, "Samples moved to the first level"). A sensor's or
+    /// pixel's value is its first-level record's hemisphere, so that
+    /// record's noise is the answer's own; a deeper record's noise reaches
+    /// the answer averaged with that of the many other records its viewer's
+    /// hemisphere meets. So every record below the first level takes
+    /// kDeeperScale of what DeeperSampleFraction gives it, and a first-level
+    /// record takes FirstLevelFraction of Radiance's count.
+    static constexpr double kDeeperScale = 0.5;
+    static constexpr double kFirstLevelBoost = 1.5;
+    /// Deeper records made per first-level record at which the first level
+    /// takes the whole boost.
+    static constexpr double kFullBoostRatio = 32;
+    /// The first level's fraction of Radiance's count, from the records the
+    /// thread made before (never from the record's own samples): the extra
+    /// first-level samples pay only where each first-level record leads to
+    /// many deeper ones (sparse sensors: cornell floor 120 per record), not
+    /// where first-level records are many and share their deeper ones
+    /// (pictures: 2.5). With optimal allocation between two levels the first
+    /// level's count grows as the square root of that ratio, so the boost is
+    /// sqrt(ratio / kFullBoostRatio) · kFirstLevelBoost, between 1 and
+    /// kFirstLevelBoost; 1 with fewer than two bounces or no records yet.
+    static double FirstLevelFraction(int bounces, int firstLevelRecords, int deeperRecords);
     /// Records a thread makes at a level before their mean Ē is trusted as
     /// the level's typical value.
     static constexpr int kShareGuessRecords = 32;

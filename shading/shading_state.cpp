@@ -30,7 +30,7 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
               ambient_.hessianRecords ? RecordMethod::Hessian : RecordMethod::Classic,
               ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
               shading_.limits.weight, scene_.distanceTolerance,
-              HessianFarDistance(scene_.cubeSize)},
+              HessianFarDistance(scene_.cubeSize), ambient_.bounces},
           cache) {
     lambertian.name = "Lamb";
     lambertian.type = MaterialType::Plastic;

@@ -278,12 +278,17 @@ int SmoothRecordRays(RecordMethod method, int level) {
 // environment. The first level, and the classic records at any level, keep
 // Radiance's -as·weight.
 TEST(IrradianceCache, DeeperHessianRecordsSuperSampleOnlyWhereRough) {
-    // Level 0: ns = 16, 256 cells, 128 extra. Level 1: ns = round(sqrt(128)) = 11,
-    // 121 cells, 64 extra.
+    // Level 0: ns = 16, 256 cells, 128 extra. Level 1 (weight 0.5 times
+    // kDeeperScale 0.5): ns = 8, 64 cells, 32 extra.
+    static_assert(IrradianceCache::kDeeperScale == 0.5);
     EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 0), 256 + 128);
-    EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 1), 121);
-    // Classic level 1: rows = round(sqrt(128/π)) = 6, 19 columns, 64 extra.
-    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 6 * 19 + 64);
+    // Of the 32 extra, the share the contrast rule leaves is a fraction of
+    // one, rounded at random: 0 or 1 (here 1).
+    const int level1 = SmoothRecordRays(RecordMethod::Hessian, 1);
+    EXPECT_GE(level1, 64);
+    EXPECT_LE(level1, 64 + 1);
+    // Classic level 1: rows = round(sqrt(64/π)) = 5, 16 columns, 32 extra.
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 5 * 16 + 32);
 }
 
 TEST(IrradianceCache, DeeperSampleFractionIsTheShareSquaredWithAFloor) {
@@ -338,17 +343,21 @@ TEST(IrradianceCache, DeeperRecordsTakeFewerRaysWhereOtherLightDominates) {
     const DeeperRecord lit = MakeDeeperRecord(1, 35.0, 100, typical);   // share 1/101
     EXPECT_EQ(dark.rays, full.rays);
     EXPECT_TRUE(even.otherAsked);
-    // Classic divisions: rows = round(sqrt(256 · 0.5 · f / π)), columns = round(π · rows).
-    EXPECT_EQ(full.rays, 6 * 19);
-    EXPECT_EQ(even.rays, 5 * 16);  // f = 0.64: rows = round(sqrt(26.1)) = 5
-    EXPECT_EQ(lit.rays, 3 * 9);    // f = 1/4, the floor
+    // Classic divisions: rows = round(sqrt(256 · 0.5 · f / π)), columns =
+    // round(π · rows), f the share's fraction times kDeeperScale (0.5).
+    EXPECT_EQ(full.rays, 5 * 16);  // f = 0.5: rows = round(sqrt(20.4)) = 5
+    EXPECT_EQ(even.rays, 4 * 13);  // f = 0.64 · 0.5: rows = round(sqrt(13.0)) = 4
+    // f = 1/4 (the floor) · 0.5: rows = round(sqrt(5.1)) = 2, raised to the
+    // three rows a cached hemisphere has at least.
+    EXPECT_EQ(lit.rays, 3 * 9);
     // Fewer samples of a furnace are still exact.
     for (const DeeperRecord& r : {full, dark, even, lit}) EXPECT_NEAR(r.value, 0.7, 1e-12);
 }
 
 TEST(IrradianceCache, FirstLevelAndUnguessedRecordsAreSampledInFull) {
     const DeeperRecord full = MakeDeeperRecord(1, -1, 100, 0.7);
-    // The first level is the answer's own error: never reduced, nor asked.
+    // The first level is the answer's own error: never reduced, nor asked
+    // (with one bounce, as here, not raised either: FirstLevelFraction).
     const DeeperRecord first = MakeDeeperRecord(0, 1e6, 100, 0.7);
     EXPECT_FALSE(first.otherAsked);
     EXPECT_EQ(first.rays, 9 * 28);  // rows = round(sqrt(256/π)) = 9
@@ -359,6 +368,49 @@ TEST(IrradianceCache, FirstLevelAndUnguessedRecordsAreSampledInFull) {
     EXPECT_EQ(early.rays, full.rays);
     const DeeperRecord enough = MakeDeeperRecord(1, 1e6, IrradianceCache::kShareGuessRecords, 0.7);
     EXPECT_LT(enough.rays, full.rays);
+}
+
+TEST(IrradianceCache, FirstLevelFractionGrowsWithTheDeeperRecordsPerFirstLevelRecord) {
+    using C = IrradianceCache;
+    // One bounce, or nothing made yet: Radiance's count.
+    EXPECT_EQ(C::FirstLevelFraction(1, 1, 1000), 1.0);
+    EXPECT_EQ(C::FirstLevelFraction(2, 0, 1000), 1.0);
+    EXPECT_EQ(C::FirstLevelFraction(2, 10, 0), 1.0);
+    // sqrt(ratio / 32) · 1.5 between 1 and 1.5: a picture's 2.5 deeper
+    // records per first-level record get no boost, a sparse sensor grid's
+    // 120 the whole of it.
+    EXPECT_EQ(C::FirstLevelFraction(2, 100, 250), 1.0);
+    EXPECT_DOUBLE_EQ(C::FirstLevelFraction(2, 100, 2000), 1.5 * std::sqrt(20.0 / 32));
+    EXPECT_EQ(C::FirstLevelFraction(3, 100, 3200), C::kFirstLevelBoost);
+    EXPECT_EQ(C::FirstLevelFraction(2, 84, 10000), C::kFirstLevelBoost);
+}
+
+/// Rays of a first-level record in a furnace, at -ab `bounces`, after the
+/// thread made `first` first-level and `deeper` second-level records.
+int FirstLevelRays(int bounces, int first, int deeper) {
+    IrradianceSettings settings = Settings();
+    settings.bounces = bounces;
+    const IrradianceCache cache(settings, Store());
+    IrradianceThread thread;
+    thread.madeBright = {{0.7 * first, first}, {0.7 * deeper, deeper}};
+    IrradianceCounters counters;
+    Rng rng(3);
+    Furnace env;
+    const auto r = cache.Evaluate(At({0, 0, 0}), 0.5, thread, counters, rng, env, NeverOccluded);
+    EXPECT_TRUE(r.value);
+    EXPECT_NEAR(r.value ? r.value->g : 0, 0.7, 1e-12);  // still exact
+    // The record itself counts toward the next one's fraction.
+    EXPECT_EQ(thread.madeBright[0].second, first + 1);
+    return env.rays;
+}
+
+TEST(IrradianceCache, FirstLevelRecordsTakeMoreSamplesWhereEachLeadsToManyDeeperOnes) {
+    // Radiance's count: rows = round(sqrt(256/π)) = 9, 28 columns.
+    EXPECT_EQ(FirstLevelRays(1, 1, 1000), 9 * 28);
+    EXPECT_EQ(FirstLevelRays(2, 0, 0), 9 * 28);
+    EXPECT_EQ(FirstLevelRays(2, 100, 250), 9 * 28);
+    // The whole boost: 384 divisions, rows = round(sqrt(384/π)) = 11, 35 columns.
+    EXPECT_EQ(FirstLevelRays(2, 1, 1000), 11 * 35);
 }
 
 }  // namespace
