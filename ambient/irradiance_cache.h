@@ -174,9 +174,10 @@ public:
     /// The first level's fraction of Radiance's count, from the records the
     /// thread made before (never from the record's own samples): the extra
     /// first-level samples pay only where each first-level record leads to
-    /// many deeper ones (sparse sensors: cornell floor 120 per record), not
-    /// where first-level records are many and share their deeper ones
-    /// (pictures: 2.5). With optimal allocation between two levels the first
+    /// many deeper ones (sparse sensor grids, where every sensor makes its own
+    /// first-level record and each of those a hundred or more deeper ones),
+    /// not where first-level records are many and share their deeper ones
+    /// (pictures, a few each). With optimal allocation between two levels the first
     /// level's count grows as the square root of that ratio, so the boost is
     /// sqrt(ratio / kFullBoostRatio) · kFirstLevelBoost, between 1 and
     /// kFirstLevelBoost; 1 with fewer than two bounces or no records yet.
