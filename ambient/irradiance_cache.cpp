@@ -67,28 +67,36 @@ double IrradianceCache::FirstLevelFraction(int bounces, int firstLevelRecords,
                       kFirstLevelBoost);
 }
 
+double IrradianceCache::UnlitDeeperScale(double boost) {
+    const double taken = (boost - 1) / (kFirstLevelBoost - 1);
+    return 1 - std::clamp(taken, 0.0, 1.0) * (1 - kDeeperScale);
+}
+
 double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
                                        const IrradianceThread& thread,
                                        const OtherRadianceRef* otherRadiance) const {
-    if (level <= 0) {
-        int first = 0, deeper = 0;
-        for (size_t l = 0; l < thread.madeBright.size(); ++l) {
-            (l == 0 ? first : deeper) += thread.madeBright[l].second;
-        }
-        return FirstLevelFraction(settings_.bounces, first, deeper);
+    int first = 0, deeper = 0;
+    for (size_t l = 0; l < thread.madeBright.size(); ++l) {
+        (l == 0 ? first : deeper) += thread.madeBright[l].second;
     }
+    if (level <= 0) return FirstLevelFraction(settings_.bounces, first, deeper);
+    // A deeper record is made inside a first-level hemisphere that is not
+    // yet counted among the records made: count it, or the first sensor's
+    // hemisphere, which makes many of a run's deeper records, would see no
+    // boost and take their whole share.
+    const double unlit = UnlitDeeperScale(FirstLevelFraction(settings_.bounces, first + 1, deeper));
     if (!otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
-        return kDeeperScale;
+        return unlit;
     }
     const auto [sum, count] = thread.madeBright[static_cast<size_t>(level)];
-    if (count < kShareGuessRecords) return kDeeperScale;
+    if (count < kShareGuessRecords) return unlit;
     // The ambient term's guess: the material's coefficient times the level's
     // typical Ē, from records made before this one (not from this record's
     // own samples, so that how many it takes cannot depend on what they saw,
     // which would bias it).
     const double ambient = coefficientIntensity * sum / count;
     const double other = (*otherRadiance)();
-    if (!(ambient > 0) || !(other > 0)) return kDeeperScale;
+    if (!(ambient > 0) || !(other > 0)) return unlit;
     return kDeeperScale * DeeperSampleFraction(ambient / (ambient + other));
 }
 

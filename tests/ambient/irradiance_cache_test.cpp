@@ -278,17 +278,17 @@ int SmoothRecordRays(RecordMethod method, int level) {
 // environment. The first level, and the classic records at any level, keep
 // Radiance's -as·weight.
 TEST(IrradianceCache, DeeperHessianRecordsSuperSampleOnlyWhereRough) {
-    // Level 0: ns = 16, 256 cells, 128 extra. Level 1 (weight 0.5 times
-    // kDeeperScale 0.5): ns = 8, 64 cells, 32 extra.
-    static_assert(IrradianceCache::kDeeperScale == 0.5);
+    // Level 0: ns = 16, 256 cells, 128 extra. Level 1 (weight 0.5; one
+    // bounce, so no samples moved to the first level): ns = round(sqrt(128))
+    // = 11, 121 cells, 64 extra.
     EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 0), 256 + 128);
-    // Of the 32 extra, the share the contrast rule leaves is a fraction of
-    // one, rounded at random: 0 or 1 (here 1).
+    // Of the 64 extra, the share the contrast rule leaves is a fraction of
+    // one, rounded at random: 0 or 1.
     const int level1 = SmoothRecordRays(RecordMethod::Hessian, 1);
-    EXPECT_GE(level1, 64);
-    EXPECT_LE(level1, 64 + 1);
-    // Classic level 1: rows = round(sqrt(64/π)) = 5, 16 columns, 32 extra.
-    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 5 * 16 + 32);
+    EXPECT_GE(level1, 121);
+    EXPECT_LE(level1, 121 + 1);
+    // Classic level 1: rows = round(sqrt(128/π)) = 6, 19 columns, 64 extra.
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 6 * 19 + 64);
 }
 
 TEST(IrradianceCache, DeeperSampleFractionIsTheShareSquaredWithAFloor) {
@@ -308,11 +308,20 @@ struct DeeperRecord {
     double value = 0;
     bool otherAsked = false;
 };
-DeeperRecord MakeDeeperRecord(int level, double other, int made, double typical) {
-    const IrradianceCache cache(Settings(), Store());
+///
+/// With two bounces and `firstLevel` first-level records made before
+/// (default none: the first level's hemisphere in progress counts as one, so
+/// that `made` >= 32 deeper records give it the whole boost and unlit deeper
+/// records kDeeperScale).
+DeeperRecord MakeDeeperRecord(int level, double other, int made, double typical,
+                              int firstLevel = 0) {
+    IrradianceSettings settings = Settings();
+    settings.bounces = 2;
+    const IrradianceCache cache(settings, Store());
     IrradianceThread thread;
     thread.depth = level;
     thread.madeBright.assign(static_cast<size_t>(level) + 1, {0.0, 0});
+    thread.madeBright[0] = {typical * firstLevel, firstLevel};
     thread.madeBright[static_cast<size_t>(level)] = {typical * made, made};
     IrradianceCounters counters;
     Rng rng(5);
@@ -354,10 +363,32 @@ TEST(IrradianceCache, DeeperRecordsTakeFewerRaysWhereOtherLightDominates) {
     for (const DeeperRecord& r : {full, dark, even, lit}) EXPECT_NEAR(r.value, 0.7, 1e-12);
 }
 
+// Deeper records without other light give up samples only as far as the
+// first level is boosted to pay for them; lamp-lit ones take kDeeperScale of
+// their share regardless.
+TEST(IrradianceCache, UnlitDeeperRecordsAreCutOnlyAsFarAsTheFirstLevelIsBoosted) {
+    using C = IrradianceCache;
+    EXPECT_EQ(C::UnlitDeeperScale(1.0), 1.0);
+    EXPECT_EQ(C::UnlitDeeperScale(C::kFirstLevelBoost), C::kDeeperScale);
+    EXPECT_DOUBLE_EQ(C::UnlitDeeperScale(1.25), 0.75);
+    EXPECT_EQ(C::UnlitDeeperScale(0.5), 1.0);
+    EXPECT_EQ(C::UnlitDeeperScale(3.0), C::kDeeperScale);
+    const double typical = 0.7;
+    // 100 deeper records after 99 first-level ones (and the one in
+    // progress): ratio 1, no boost.
+    const DeeperRecord unboostedDark = MakeDeeperRecord(1, 0.0, 100, typical, 99);
+    const DeeperRecord unboostedLit = MakeDeeperRecord(1, 35.0, 100, typical, 99);
+    const DeeperRecord boostedDark = MakeDeeperRecord(1, 0.0, 100, typical, 0);
+    EXPECT_EQ(unboostedDark.rays, 6 * 19);  // f = 1: rows = round(sqrt(40.7)) = 6
+    EXPECT_EQ(boostedDark.rays, 5 * 16);    // f = 0.5
+    EXPECT_EQ(unboostedLit.rays, 3 * 9);    // f = 1/4 · 0.5, three rows at least
+}
+
 TEST(IrradianceCache, FirstLevelAndUnguessedRecordsAreSampledInFull) {
     const DeeperRecord full = MakeDeeperRecord(1, -1, 100, 0.7);
     // The first level is the answer's own error: never reduced, nor asked
-    // (with one bounce, as here, not raised either: FirstLevelFraction).
+    // (with no deeper records made, as here, not raised either:
+    // FirstLevelFraction).
     const DeeperRecord first = MakeDeeperRecord(0, 1e6, 100, 0.7);
     EXPECT_FALSE(first.otherAsked);
     EXPECT_EQ(first.rays, 9 * 28);  // rows = round(sqrt(256/π)) = 9
