@@ -72,6 +72,24 @@ double IrradianceCache::UnlitDeeperScale(double boost) {
     return 1 - std::clamp(taken, 0.0, 1.0) * (1 - kDeeperScale);
 }
 
+std::optional<double> IrradianceCache::AmbientShare(int level, double coefficientIntensity,
+                                                    const IrradianceThread& thread,
+                                                    const OtherRadianceRef* otherRadiance) const {
+    if (!otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
+        return std::nullopt;
+    }
+    const auto [sum, count] = thread.madeBright[static_cast<size_t>(level)];
+    if (count < kShareGuessRecords) return std::nullopt;
+    // The ambient term's guess: the material's coefficient times the level's
+    // typical Ē, from records made before this one (not from this record's
+    // own samples, so that how many it takes cannot depend on what they saw,
+    // which would bias it).
+    const double ambient = coefficientIntensity * sum / count;
+    const double other = (*otherRadiance)();
+    if (!(ambient > 0) || !(other > 0)) return std::nullopt;
+    return ambient / (ambient + other);
+}
+
 double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
                                        const IrradianceThread& thread,
                                        const OtherRadianceRef* otherRadiance) const {
@@ -80,24 +98,14 @@ double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
         (l == 0 ? first : deeper) += thread.madeBright[l].second;
     }
     if (level <= 0) return FirstLevelFraction(settings_.bounces, first, deeper);
+    if (const auto share = AmbientShare(level, coefficientIntensity, thread, otherRadiance)) {
+        return kDeeperScale * DeeperSampleFraction(*share);
+    }
     // A deeper record is made inside a first-level hemisphere that is not
     // yet counted among the records made: count it, or the first sensor's
     // hemisphere, which makes many of a run's deeper records, would see no
     // boost and take their whole share.
-    const double unlit = UnlitDeeperScale(FirstLevelFraction(settings_.bounces, first + 1, deeper));
-    if (!otherRadiance || static_cast<size_t>(level) >= thread.madeBright.size()) {
-        return unlit;
-    }
-    const auto [sum, count] = thread.madeBright[static_cast<size_t>(level)];
-    if (count < kShareGuessRecords) return unlit;
-    // The ambient term's guess: the material's coefficient times the level's
-    // typical Ē, from records made before this one (not from this record's
-    // own samples, so that how many it takes cannot depend on what they saw,
-    // which would bias it).
-    const double ambient = coefficientIntensity * sum / count;
-    const double other = (*otherRadiance)();
-    if (!(ambient > 0) || !(other > 0)) return unlit;
-    return kDeeperScale * DeeperSampleFraction(ambient / (ambient + other));
+    return UnlitDeeperScale(FirstLevelFraction(settings_.bounces, first + 1, deeper));
 }
 
 IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, double weight,

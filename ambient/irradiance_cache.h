@@ -216,7 +216,17 @@ private:
     Sampled Sample(const AmbientQuery& query, double weight, double fraction, int level,
                    IrradianceThread& thread, IrradianceCounters& counters, Rng& rng,
                    IrradianceTraceRef trace) const;
-    /// DeeperSampleFraction for a new record of level `level` (> 0), or 1.
+    /// The ambient term's share of what a new record's point sends its
+    /// viewers (DeeperSampleFraction), or nullopt when the point has no other
+    /// light, there is no `otherRadiance`, or the thread has made fewer than
+    /// kShareGuessRecords records of the level to guess the ambient term from.
+    std::optional<double> AmbientShare(int level, double coefficientIntensity,
+                                       const IrradianceThread& thread,
+                                       const OtherRadianceRef* otherRadiance) const;
+    /// The fraction of Radiance's sample count a new record of level `level`
+    /// takes: FirstLevelFraction at the first level; below it kDeeperScale ·
+    /// DeeperSampleFraction(share) where AmbientShare knows the share, else
+    /// UnlitDeeperScale.
     double SampleFraction(int level, double coefficientIntensity, const IrradianceThread& thread,
                           const OtherRadianceRef* otherRadiance) const;
 
