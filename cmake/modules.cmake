@@ -7,6 +7,12 @@ target_compile_options(rt_warnings INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast
   $<$<BOOL:${RT_WERROR}>:-Werror>)
 
+# Link a shared library only where a program uses a symbol of it: rtrace takes
+# the Radiance-picture reader from rt_image but not its OpenEXR code, so it
+# should not need OpenEXR, Imath, Iex and IlmThread installed to start
+# (Debian's linker keeps every library named on the command line by default).
+add_link_options(LINKER:--as-needed)
+
 if(RT_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer
                       -fno-sanitize-recover=undefined)

@@ -15,6 +15,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "image/hdr.h"
 
 namespace rt {
 namespace {
@@ -168,6 +169,15 @@ bool IsExrFile(const std::string& path) {
         return false;
     const std::array<char, 4> kMagic = {0x76, 0x2f, 0x31, 0x01};
     return magic == kMagic;
+}
+
+Image ReadImage(const std::string& path) {
+    {
+        std::ifstream probe(path, std::ios::binary);
+        if (!probe)
+            throw Error(Error::Kind::System, FileLoc{path}, "cannot open");
+    }
+    return IsExrFile(path) ? ReadExr(path) : ReadHdr(path);
 }
 
 }  // namespace rt

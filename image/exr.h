@@ -32,4 +32,9 @@ void WriteExr(const std::string& path, const Image& image, const ImageMetadata& 
 /// True when the file starts with the OpenEXR magic number (76 2f 31 01).
 [[nodiscard]] bool IsExrFile(const std::string& path);
 
+/// Reads an OpenEXR file or a Radiance picture, chosen by the file's magic number.
+/// It lives here, not in hdr.h, so that a program reading only Radiance pictures
+/// (rtrace's colorpict patterns) does not link OpenEXR.
+[[nodiscard]] Image ReadImage(const std::string& path);
+
 }  // namespace rt

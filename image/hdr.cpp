@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "image/exr.h"
 
 namespace rt {
 namespace {
@@ -287,15 +286,6 @@ Image ReadHdr(const std::string& path, std::vector<std::string>* headerLines) {
     if (!in)
         throw Error(Error::Kind::System, FileLoc{path}, "cannot open");
     return ReadHdr(in, path, headerLines);
-}
-
-Image ReadImage(const std::string& path) {
-    {
-        std::ifstream probe(path, std::ios::binary);
-        if (!probe)
-            throw Error(Error::Kind::System, FileLoc{path}, "cannot open");
-    }
-    return IsExrFile(path) ? ReadExr(path) : ReadHdr(path);
 }
 
 }  // namespace rt

@@ -45,7 +45,4 @@ void WriteHdr(const std::string& path, const Image& image,
 [[nodiscard]] Image ReadHdr(const std::string& path,
                             std::vector<std::string>* headerLines = nullptr);
 
-/// Reads an OpenEXR file or a Radiance picture, chosen by the file's magic number.
-[[nodiscard]] Image ReadImage(const std::string& path);
-
 }  // namespace rt

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "image/exr.h"
 #include "image/compare.h"
 #include "image/hdr.h"
 

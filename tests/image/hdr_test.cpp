@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "image/exr.h"
 
 namespace rt {
 namespace {
