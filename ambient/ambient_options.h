@@ -20,6 +20,18 @@ namespace rt {
 /// samp_hemi" only when malloc does.
 inline constexpr int kMaxAmbientDivisions = 1 << 22;
 
+/// -ah (lazyrad's own): the methods that make new records. Radiance 5's
+/// Hessian records (elliptical radii, occlusion-aware gradients) are half as
+/// many as the classic split-sphere ones where queries are dense; the classic
+/// stratified hemisphere is the less noisy where a sensor's own first-level
+/// record decides its value (README, "Record methods"). Only the classic
+/// records keep a furnace exact at every setting, hence the default.
+enum class RecordMethods {
+    Classic,  // -ah-, the default: classic records at every level
+    Hessian,  // -ah+: Hessian records at every level
+    Mixed,    // -ahm: classic first-level records, Hessian deeper ones
+};
+
 struct AmbientOptions {
     Rgb value;                  // -av: ambient radiance used where bounces stop
     int valueWeight = 0;        // -aw: weight of -av in the running average
@@ -28,10 +40,9 @@ struct AmbientOptions {
     int resolution = 256;       // -ar
     int divisions = 1024;       // -ad
     int superSamples = 512;     // -as
-    /// -ah (lazyrad's own): new records by Radiance 5's Hessian method
-    /// (elliptical radii, occlusion-aware gradients) instead of the classic
-    /// split-sphere records (ambient/irradiance_cache.h RecordMethod).
-    bool hessianRecords = false;
+    /// -ah (lazyrad's own): which method makes new records at each level
+    /// (ambient/irradiance_cache.h RecordMethod).
+    RecordMethods recordMethods = RecordMethods::Classic;
     std::string file;           // -af, empty for none
     /// -ae/-aE (exclude) or -ai/-aI (include) modifier names; the first use of
     /// the other kind restarts the list (Radiance's rule).

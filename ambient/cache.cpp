@@ -29,9 +29,11 @@ bool IsUsable(const AmbientRecord& r) {
 }  // namespace
 
 AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy,
-                           AmbientLimits limits, RecordWeighting weighting)
+                           AmbientLimits limits, RecordWeighting weighting,
+                           std::optional<RecordWeighting> deeperWeighting)
     : accuracy_(accuracy),
       weighting_(weighting),
+      deeperWeighting_(deeperWeighting.value_or(weighting)),
       limits_(limits),
       indexOrigin_(cubeOrigin),
       indexSize_(cubeSize > 0 ? cubeSize : 1.0) {}
@@ -64,7 +66,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     *recordsUsed = 0;
     Rgb sum;
     double weightSum = 0;
-    const bool hat = weighting_ == RecordWeighting::Hat;
+    const bool hat = (q.level > 0 ? deeperWeighting_ : weighting_) == RecordWeighting::Hat;
     // Radiance 5's normal limit (radians), widened for weak rays.
     double maxAngle = 10.0 * kPi / 180.0 + a;
     if (hat && q.rayWeight < 0.6) {

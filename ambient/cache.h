@@ -49,9 +49,12 @@ enum class RecordWeighting {
 class AmbientCache {
 public:
     /// `cubeOrigin/cubeSize` bound the scene (records outside still work);
-    /// `accuracy` is -aa (> 0).
+    /// `accuracy` is -aa (> 0). `weighting` weighs the first level's records,
+    /// `deeperWeighting` (default: the same) those of every deeper level, so
+    /// that each level's records are weighed as their method made them.
     AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accuracy, AmbientLimits limits,
-                 RecordWeighting weighting = RecordWeighting::SplitSphere);
+                 RecordWeighting weighting = RecordWeighting::SplitSphere,
+                 std::optional<RecordWeighting> deeperWeighting = std::nullopt);
 
     /// Stores a record (computed here or read from a file). Records with a
     /// non-positive or non-finite radius, or non-finite values, are ignored
@@ -91,7 +94,8 @@ public:
 private:
     mutable std::shared_mutex mutex_;
     double accuracy_;
-    RecordWeighting weighting_;
+    RecordWeighting weighting_;        // level 0
+    RecordWeighting deeperWeighting_;  // levels 1 and more
     AmbientLimits limits_;
     Vec3 indexOrigin_;
     double indexSize_;

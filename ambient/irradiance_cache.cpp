@@ -120,7 +120,8 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
     // its own (`weight`).
     options.weight = weight * fraction;
     options.caching = store_ != nullptr;
-    const bool hessian = settings_.method == RecordMethod::Hessian;
+    // The level's own method (-ah); -aa 0 hemispheres (level -1) take the first level's.
+    const bool hessian = settings_.MethodAt(level) == RecordMethod::Hessian;
     // Hessian records below the first level take extra samples only where
     // their first pass is still rough by -aa, the relative error the cache
     // already accepts from interpolation (SuperSamplesForContrast). Measured

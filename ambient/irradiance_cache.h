@@ -79,7 +79,12 @@ enum class RecordMethod {
 };
 
 struct IrradianceSettings {
+    /// The first level's method, and the deeper levels' (nullopt: the same).
     RecordMethod method = RecordMethod::Classic;
+    std::optional<RecordMethod> deeperMethod;
+    RecordMethod MethodAt(int level) const {
+        return level > 0 ? deeperMethod.value_or(method) : method;
+    }
     double accuracy = 0.1;    // -aa (> 0 with a store)
     int divisions = 1024;     // -ad
     int superSamples = 512;   // -as

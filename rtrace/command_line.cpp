@@ -370,8 +370,24 @@ constexpr OptionRow kOptionRows[] = {
     Int("-ad", "ambient divisions", [](RtraceOptions& o) -> int& { return o.ambient.divisions; }).Listed(),
     Int("-as", "ambient super-samples", [](RtraceOptions& o) -> int& { return o.ambient.superSamples; }).Listed(),
     // lazyrad's own; not Listed: -defaults stays Radiance's.
-    Toggle("-ah", "Hessian ambient records (Radiance 5's method)",
-           [](RtraceOptions& o) -> bool& { return o.ambient.hessianRecords; }),
+    // -ah+ Hessian records at every level, -ah- (the default) classic ones,
+    // -ahm classic first-level records and Hessian deeper ones; a bare -ah is
+    // -ah+, as it was when -ah was a toggle that started off.
+    Attached("-ah", "ambient record methods (+ Hessian, - classic, m mixed)",
+             [](RtraceOptions& o, std::string_view rest) {
+                 if (rest.empty() || rest == "+" || rest == "y" || rest == "Y" || rest == "t" ||
+                     rest == "T" || rest == "1") {
+                     o.ambient.recordMethods = RecordMethods::Hessian;
+                 } else if (rest == "-" || rest == "n" || rest == "N" || rest == "f" ||
+                            rest == "F" || rest == "0") {
+                     o.ambient.recordMethods = RecordMethods::Classic;
+                 } else if (rest == "m") {
+                     o.ambient.recordMethods = RecordMethods::Mixed;
+                 } else {
+                     return false;
+                 }
+                 return true;
+             }),
     Word("-ai", "ambient include modifier",
          [](RtraceOptions& o, const std::string& v) {
              AddToList(o.ambient.modifierList, o.ambient.listIsInclude, nullptr, true, {v});

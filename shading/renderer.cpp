@@ -32,7 +32,10 @@ std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
         AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()),
         // Each record method with its own interpolation: Radiance 5's hat
         // weights go with its Hessian records.
-        ambient.hessianRecords ? RecordWeighting::Hat : RecordWeighting::SplitSphere);
+        ambient.recordMethods == RecordMethods::Hessian ? RecordWeighting::Hat
+                                                        : RecordWeighting::SplitSphere,
+        ambient.recordMethods == RecordMethods::Classic ? RecordWeighting::SplitSphere
+                                                        : RecordWeighting::Hat);
 }
 
 std::shared_ptr<const Renderer::Shared> Renderer::Share(const Scene& scene, const RayCore& core,

@@ -27,7 +27,10 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
       cache(std::move(cache_)),
       irradiance(
           IrradianceSettings{
-              ambient_.hessianRecords ? RecordMethod::Hessian : RecordMethod::Classic,
+              ambient_.recordMethods == RecordMethods::Hessian ? RecordMethod::Hessian
+                                                               : RecordMethod::Classic,
+              ambient_.recordMethods == RecordMethods::Classic ? RecordMethod::Classic
+                                                               : RecordMethod::Hessian,
               ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
               shading_.limits.weight, scene_.distanceTolerance,
               HessianFarDistance(scene_.cubeSize), ambient_.bounces},

@@ -112,6 +112,26 @@ TEST(AmbientCache, HatWeightsAsRadiance5) {
     }
 }
 
+/// -ahm: the first level's records are weighed by split spheres, the deeper
+/// levels' by Radiance 5's hat. A record 15° off the query's normal passes
+/// the hat's 21.5° limit but not the split sphere's error bound (0.18 > 0.2
+/// less the distance term), so only the level-1 copy is accepted.
+TEST(AmbientCache, EachLevelIsWeighedByItsOwnRule) {
+    AmbientCache c(Vec3(-10, -10, -10), 20, 0.2, AmbientLimits{0.01, 5},
+                   RecordWeighting::SplitSphere, RecordWeighting::Hat);
+    const double t = 15 * kPi / 180;
+    for (const int level : {0, 1}) {
+        AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0.8);
+        r.normal = Vec3(std::sin(t), 0, std::cos(t));
+        r.uAxis = Vec3(std::cos(t), 0, -std::sin(t));
+        r.level = level;
+        c.Add(r);
+    }
+    // 0.02 along x, in front of the tilted record: distance term 0.025.
+    EXPECT_FALSE(c.Interpolate(FloorQuery({0.02, 0, 0}, 0)).has_value());
+    EXPECT_TRUE(c.Interpolate(FloorQuery({0.02, 0, 0}, 1)).has_value());
+}
+
 TEST(AmbientCache, NormalDivergenceCountsInTheError) {
     AmbientCache cache = MakeCache(0.1);
     cache.Add(FloorRecord({0, 0, 0}, 0.5, 1));

@@ -256,10 +256,12 @@ struct Smooth {
 };
 
 /// Rays one new Hessian or classic record takes at `level` in Smooth, at
-/// -ad 256 -as 128.
-int SmoothRecordRays(RecordMethod method, int level) {
+/// -ad 256 -as 128; `deeper` is the deeper levels' method (default: `method`).
+int SmoothRecordRays(RecordMethod method, int level,
+                     std::optional<RecordMethod> deeper = std::nullopt) {
     IrradianceSettings settings = Settings();
     settings.method = method;
+    settings.deeperMethod = deeper;
     settings.superSamples = 128;
     const IrradianceCache cache(settings, Store());
     IrradianceThread thread;
@@ -289,6 +291,18 @@ TEST(IrradianceCache, DeeperHessianRecordsSuperSampleOnlyWhereRough) {
     EXPECT_LE(level1, 121 + 1);
     // Classic level 1: rows = round(sqrt(128/π)) = 6, 19 columns, 64 extra.
     EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 1), 6 * 19 + 64);
+}
+
+// -ahm: the first level's records by the first method, deeper ones by the
+// other; the ray counts tell the two samplers apart (classic level 0: 9 rows
+// x 28 columns + 128; Hessian level 1: 121 cells and at most one extra).
+TEST(IrradianceCache, EachLevelMakesRecordsByItsOwnMethod) {
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Classic, 0, RecordMethod::Hessian), 9 * 28 + 128);
+    const int level1 = SmoothRecordRays(RecordMethod::Classic, 1, RecordMethod::Hessian);
+    EXPECT_GE(level1, 121);
+    EXPECT_LE(level1, 121 + 1);
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 1, RecordMethod::Classic), 6 * 19 + 64);
+    EXPECT_EQ(SmoothRecordRays(RecordMethod::Hessian, 0, RecordMethod::Classic), 256 + 128);
 }
 
 TEST(IrradianceCache, DeeperSampleFractionIsTheShareSquaredWithAFloor) {

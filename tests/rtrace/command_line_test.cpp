@@ -160,7 +160,9 @@ TEST(RtraceOptionsParse, EveryOptionInTheTableParses) {
             case ValueKind::Real: args = {name, "0.5"}; break;
             case ValueKind::Rgb: args = {name, "0.1", "0.2", "0.3"}; break;
             case ValueKind::Word: args = {name, "word"}; break;
-            case ValueKind::Attached: args = {name + (name == "-f" ? "ad" : "vd")}; break;
+            case ValueKind::Attached:
+                args = {name + (name == "-f" ? "ad" : name == "-ah" ? "m" : "vd")};
+                break;
             case ValueKind::Custom: args = {name, name == "-ap" ? "map.pm" : "0.5"}; break;
         }
         if (name == "-tI" || name == "-tE" || name == "-aI" || name == "-aE") continue;  // files
@@ -244,14 +246,18 @@ TEST(RtraceOptionsParse, TogglesFollowRadianceSuffixes) {
     EXPECT_EQ(ErrorOf({"-h++", "s.rad"}), "command line error at '-h++'");
 }
 
-/// -ah (lazyrad's record method): off by default, a toggle like Radiance's,
-/// a bad suffix is a one-line error, and -defaults does not list it.
-TEST(RtraceOptionsParse, HessianRecordsToggle) {
-    EXPECT_FALSE(ParseOptions({}).ambient.hessianRecords);
-    EXPECT_TRUE(ParseOptions({"-ah+"}).ambient.hessianRecords);
-    EXPECT_TRUE(ParseOptions({"-ah"}).ambient.hessianRecords);
-    EXPECT_FALSE(ParseOptions({"-ah+", "-ah-"}).ambient.hessianRecords);
+/// -ah (lazyrad's record methods): classic by default, + Hessian, - classic,
+/// m mixed, a bare -ah Hessian; a bad suffix is a one-line error, and -defaults
+/// does not list it.
+TEST(RtraceOptionsParse, RecordMethodsOption) {
+    EXPECT_EQ(ParseOptions({}).ambient.recordMethods, RecordMethods::Classic);
+    EXPECT_EQ(ParseOptions({"-ah+"}).ambient.recordMethods, RecordMethods::Hessian);
+    EXPECT_EQ(ParseOptions({"-ah"}).ambient.recordMethods, RecordMethods::Hessian);
+    EXPECT_EQ(ParseOptions({"-ah-"}).ambient.recordMethods, RecordMethods::Classic);
+    EXPECT_EQ(ParseOptions({"-ah+", "-ah-"}).ambient.recordMethods, RecordMethods::Classic);
+    EXPECT_EQ(ParseOptions({"-ah-", "-ahm"}).ambient.recordMethods, RecordMethods::Mixed);
     EXPECT_EQ(ErrorOf({"-ahx", "s.rad"}), "command line error at '-ahx'");
+    EXPECT_EQ(ErrorOf({"-ah++", "s.rad"}), "command line error at '-ah++'");
     EXPECT_EQ(FormatDefaults(ParseOptions({"-ah+"})).find("-ah"), std::string::npos);
 }
 
