@@ -489,6 +489,12 @@ FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n
 
 namespace {
 
+/// Relative spread of a hemisphere's normalised brightness within which it
+/// counts as uniform: far above the rounding of interpolated values (about
+/// 1e-9 relative in a furnace), at most float rounding (records read from an
+/// ambient file), far below any real contrast.
+constexpr double kUniformBrightness = 1e-6;
+
 /// EstimateHessian() for normalised brightness `y`.
 HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<double>& y,
                              bool radiometric) {
@@ -550,7 +556,16 @@ HessianEstimate EstimateFrom(const HessianHemisphere& h, const std::vector<doubl
         }
     }
     sums.To(est.gradient, est.hessian);
-    if (!est.radiometric)
+    // A uniform hemisphere has no gradient. Radiance's triangles reach only
+    // the outermost samples, not the horizon, so its edge terms give one a
+    // gradient all the same (0.1–0.5 per unit length at -ad 16 in a furnace,
+    // 2 % brighter per bounce); and near a corner (samples 1e-4 away) they
+    // turn even the rounding of the sampled values into gradients that the
+    // cap lets extrapolate by up to ±a, which the level above samples as
+    // real differences (in a furnace at -ab 50 that chain grew from 1e-9 to
+    // 13 %). So brightness spread within kUniformBrightness gives none.
+    const auto [low, high] = std::minmax_element(y.begin(), y.end());
+    if (!est.radiometric || *high - *low <= kUniformBrightness * *high)
         est.gradient = Vec3();
     return est;
 }
