@@ -24,8 +24,9 @@ inline constexpr int kMaxAmbientDivisions = 1 << 22;
 /// Hessian records (elliptical radii, occlusion-aware gradients) are half as
 /// many as the classic split-sphere ones where queries are dense; the classic
 /// stratified hemisphere is the less noisy where a sensor's own first-level
-/// record decides its value (README, "Record methods"). Only the classic
-/// records keep a furnace exact at every setting, hence the default.
+/// record decides its value (README, "Record methods"). Classic is the
+/// default: the Hessian records are three times less accurate in the daylit
+/// rooms, and the mixed ones are not yet exact in a furnace at every seed.
 enum class RecordMethods {
     Classic,  // -ah-, the default: classic records at every level
     Hessian,  // -ah+: Hessian records at every level

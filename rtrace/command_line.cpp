@@ -375,11 +375,11 @@ constexpr OptionRow kOptionRows[] = {
     // -ah+, as it was when -ah was a toggle that started off.
     Attached("-ah", "ambient record methods (+ Hessian, - classic, m mixed)",
              [](RtraceOptions& o, std::string_view rest) {
-                 if (rest.empty() || rest == "+" || rest == "y" || rest == "Y" || rest == "t" ||
-                     rest == "T" || rest == "1") {
+                 // Radiance's toggle letters, as ApplyRow reads them.
+                 const bool one = rest.size() == 1 && rest[0] != '\0';
+                 if (rest.empty() || (one && std::strchr("yYtT+1", rest[0]))) {
                      o.ambient.recordMethods = RecordMethods::Hessian;
-                 } else if (rest == "-" || rest == "n" || rest == "N" || rest == "f" ||
-                            rest == "F" || rest == "0") {
+                 } else if (one && std::strchr("nNfF-0", rest[0])) {
                      o.ambient.recordMethods = RecordMethods::Classic;
                  } else if (rest == "m") {
                      o.ambient.recordMethods = RecordMethods::Mixed;
