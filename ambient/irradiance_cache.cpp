@@ -93,14 +93,16 @@ std::optional<double> IrradianceCache::AmbientShare(int level, double coefficien
 double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
                                        const IrradianceThread& thread,
                                        const OtherRadianceRef* otherRadiance) const {
+    if (level > 0) {
+        if (const auto share = AmbientShare(level, coefficientIntensity, thread, otherRadiance)) {
+            return kDeeperScale * DeeperSampleFraction(*share);
+        }
+    }
     int first = 0, deeper = 0;
     for (size_t l = 0; l < thread.madeBright.size(); ++l) {
         (l == 0 ? first : deeper) += thread.madeBright[l].second;
     }
     if (level <= 0) return FirstLevelFraction(settings_.bounces, first, deeper);
-    if (const auto share = AmbientShare(level, coefficientIntensity, thread, otherRadiance)) {
-        return kDeeperScale * DeeperSampleFraction(*share);
-    }
     // A deeper record is made inside a first-level hemisphere that is not
     // yet counted among the records made: count it, or the first sensor's
     // hemisphere, which makes many of a run's deeper records, would see no

@@ -23,6 +23,7 @@
 #include <optional>
 #include <vector>
 
+#include "ambient/ambient_options.h"
 #include "ambient/cache.h"
 #include "ambient/hemisphere.h"
 #include "ambient/hessian.h"
@@ -77,6 +78,26 @@ enum class RecordMethod {
     /// Hessian, with occlusion-aware gradients (hessian.h).
     Hessian,
 };
+
+/// The methods an -ah choice (ambient_options.h) makes records by: the first
+/// level's and the deeper levels'.
+struct LevelMethods {
+    RecordMethod firstLevel;
+    RecordMethod deeper;
+};
+inline LevelMethods MethodsFor(RecordMethods choice) {
+    switch (choice) {
+        case RecordMethods::Hessian: return {RecordMethod::Hessian, RecordMethod::Hessian};
+        case RecordMethods::Mixed: return {RecordMethod::Classic, RecordMethod::Hessian};
+        case RecordMethods::Classic: break;
+    }
+    return {RecordMethod::Classic, RecordMethod::Classic};
+}
+/// Each method's records are interpolated with their own weights: Radiance
+/// 5's hat goes with its Hessian records.
+inline RecordWeighting WeightingFor(RecordMethod method) {
+    return method == RecordMethod::Hessian ? RecordWeighting::Hat : RecordWeighting::SplitSphere;
+}
 
 struct IrradianceSettings {
     /// The first level's method, and the deeper levels' (nullopt: the same).

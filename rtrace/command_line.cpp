@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include "core/error.h"
 #include "program/arguments.h"
@@ -294,6 +295,15 @@ void PhotonRadiusLine(std::string& s, const RtraceOptions& o) {
 
 // In Radiance's -defaults order (rtmain.c printdefaults(), then renderopts.c
 // print_rdefaults()); rows that -defaults does not show sit with their group.
+/// Radiance's toggle suffix (-bv+, -bvn, ...): true for one of yYtT+1, false
+/// for one of nNfF-0, nullopt for anything else.
+std::optional<bool> ToggleSuffix(std::string_view rest) {
+    if (rest.size() != 1 || rest[0] == '\0') return std::nullopt;
+    if (std::strchr("yYtT+1", rest[0])) return true;
+    if (std::strchr("nNfF-0", rest[0])) return false;
+    return std::nullopt;
+}
+
 constexpr OptionRow kOptionRows[] = {
     // rtrace-specific (rtmain.c)
     Toggle("-I", "immediate irradiance at point/normal",
@@ -375,11 +385,10 @@ constexpr OptionRow kOptionRows[] = {
     // -ah+, as it was when -ah was a toggle that started off.
     Attached("-ah", "ambient record methods (+ Hessian, - classic, m mixed)",
              [](RtraceOptions& o, std::string_view rest) {
-                 // Radiance's toggle letters, as ApplyRow reads them.
-                 const bool one = rest.size() == 1 && rest[0] != '\0';
-                 if (rest.empty() || (one && std::strchr("yYtT+1", rest[0]))) {
+                 const std::optional<bool> on = ToggleSuffix(rest);
+                 if (rest.empty() || on == true) {
                      o.ambient.recordMethods = RecordMethods::Hessian;
-                 } else if (one && std::strchr("nNfF-0", rest[0])) {
+                 } else if (on == false) {
                      o.ambient.recordMethods = RecordMethods::Classic;
                  } else if (rest == "m") {
                      o.ambient.recordMethods = RecordMethods::Mixed;
@@ -459,10 +468,10 @@ int ApplyRow(const OptionRow& row, RtraceOptions& o, std::span<const std::string
                 field = !field;
                 return 0;
             }
-            char c = arg.back();
-            if (std::strchr("yYtT+1", c)) field = true;
-            else if (std::strchr("nNfF-0", c)) field = false;
-            else return -1;
+            const std::optional<bool> on =
+                ToggleSuffix(std::string_view(arg).substr(row.info.name.size()));
+            if (!on) return -1;
+            field = *on;
             return 0;
         }
         case ValueKind::Int:

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "ambient/irradiance_cache.h"
 #include "shading/ray_tree.h"
 #include "shading/shading_state.h"
 
@@ -27,15 +28,11 @@ std::shared_ptr<AmbientCache> Renderer::MakeCache(const Scene& scene,
     if (ambient.bounces <= 0 || ambient.divisions <= 0 || ambient.accuracy <= kFtiny) {
         return nullptr;
     }
+    const LevelMethods methods = MethodsFor(ambient.recordMethods);
     return std::make_shared<AmbientCache>(
         scene.cubeOrigin, scene.cubeSize, ambient.accuracy,
         AmbientLimits::FromResolution(ambient.resolution, scene.cubeSize, scene.ToleranceScale()),
-        // Each record method with its own interpolation: Radiance 5's hat
-        // weights go with its Hessian records.
-        ambient.recordMethods == RecordMethods::Hessian ? RecordWeighting::Hat
-                                                        : RecordWeighting::SplitSphere,
-        ambient.recordMethods == RecordMethods::Classic ? RecordWeighting::SplitSphere
-                                                        : RecordWeighting::Hat);
+        WeightingFor(methods.firstLevel), WeightingFor(methods.deeper));
 }
 
 std::shared_ptr<const Renderer::Shared> Renderer::Share(const Scene& scene, const RayCore& core,

@@ -27,10 +27,8 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
       cache(std::move(cache_)),
       irradiance(
           IrradianceSettings{
-              ambient_.recordMethods == RecordMethods::Hessian ? RecordMethod::Hessian
-                                                               : RecordMethod::Classic,
-              ambient_.recordMethods == RecordMethods::Classic ? RecordMethod::Classic
-                                                               : RecordMethod::Hessian,
+              MethodsFor(ambient_.recordMethods).firstLevel,
+              MethodsFor(ambient_.recordMethods).deeper,
               ambient_.accuracy, ambient_.divisions, ambient_.superSamples,
               shading_.limits.weight, scene_.distanceTolerance,
               HessianFarDistance(scene_.cubeSize), ambient_.bounces},
