@@ -33,8 +33,7 @@ struct AmbientSample {
 };
 
 /// Traces one ray from the record's point in unit direction `dir`; nullopt
-/// when the ray was refused (depth limit) or hit at distance <= 1e-6 (the
-/// division fails).
+/// when the ray was refused (depth limit; the division fails).
 /// AmbientTraceFn owns its callable (tests keep environments in one);
 /// SampleHemisphere only borrows it for the call, through an AmbientTraceRef,
 /// which costs no allocation or type-erased copy per hemisphere.

@@ -103,8 +103,8 @@ bool SampleCell(HessianHemisphere& h, int i, int j, const Vec3& dir, int n, doub
                 AmbientTraceRef trace) {
     ++h.raysTraced;
     const std::optional<AmbientSample> s = trace(dir);
-    // Distances at or below Radiance's FTINY are refused by the callback
-    // (AmbientTraceRef's contract, which knows the scene's tolerance).
+    // A distance may be below Radiance's FTINY (a wall meeting the record's
+    // surface at its edge) but never zero from a real trace.
     if (!s || !(s->distance > 0) || !IsFinite(s->radiance))
         return false;
     const Rgb radiance(std::max(s->radiance.r, 0.0), std::max(s->radiance.g, 0.0),

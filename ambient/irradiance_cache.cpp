@@ -141,13 +141,12 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
     const double lookupBefore = counters.secondsLookup;
     ++thread.depth;
     ++counters.hemispheres;
-    const double tolerance = settings_.distanceTolerance;
-    const auto sample = [&](const Vec3& dir) -> std::optional<AmbientSample> {
-        auto s = trace(dir, share);
-        // A hit at (or within rounding of) the point itself fails the division.
-        if (s && !(s->distance > tolerance)) return std::nullopt;
-        return s;
-    };
+    // Hits nearer than the distance tolerance are real: the ray core returns
+    // them only on a surface that meets the record's own at an angle (a wall
+    // at a floor point's edge; RayCore::Intersect's `leaving`). Refusing them
+    // would fail the division and darken the point, as letting them through
+    // the wall did.
+    const auto sample = [&](const Vec3& dir) { return trace(dir, share); };
     Sampled out;
     if (hessian) {
         const HessianHemisphere h = SampleHessianHemisphere(query.point, query.normal, options,

@@ -111,7 +111,7 @@ struct IrradianceSettings {
     int superSamples = 512;   // -as
     double minimumWeight = 2e-3;  // -lw: without the cache, hemisphere sizes keep
                                   // sample rays near it
-    /// Distances at or below this are a failed sample and need no leak ray
+    /// Records nearer than this to a query need no leak ray
     /// (Scene::distanceTolerance).
     double distanceTolerance = 1e-6;
     /// Hessian records: hit points farther than this (scene units) are stored

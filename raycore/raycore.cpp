@@ -12,7 +12,8 @@
 //     exact shape test directly.
 // Candidates with exact t <= tolerance (Scene::distanceTolerance, Radiance's
 // FTINY for scenes of unit size and up) or t >= tmax are rejected, so traversal
-// simply continues past the surface a ray starts on.
+// simply continues past the surface a ray starts on, except surfaces that cross
+// the one it leaves (RayCore::Intersect's `leaving`; ExactRay::tcross).
 //
 // Embree's contracts relied on here:
 //   - The context pointer given to rtcIntersect1/rtcOccluded1 is handed back
@@ -96,6 +97,15 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
 /// coordinates involved (~84 float ulps: covers rounding of the origin, the
 /// direction and the triangle test with room to spare).
 constexpr double kFloatSlack = 1e-5;
+
+/// A ray that leaves a surface (RayCore::Intersect's `leaving`) hits another
+/// surface within the tolerance if that one meets it at an angle: normals
+/// more than ~1e-3 rad apart (cos² below this), and farther than the
+/// rounding of the scene's coordinates (this many double ulps of them). A
+/// coincident surface, or the ray's own surface found again by rounding,
+/// stays discarded as Radiance discards it.
+constexpr double kCoincidentCos2 = 1.0 - 1e-6;
+constexpr double kCrossingUlps = 1e3;
 
 /// What the coincidence rule needs to know about a surface's material.
 struct Priority {
@@ -278,6 +288,18 @@ struct RayCore::Impl {
         double tmin = 0;   // tolerance in these units
         double tmax = kInf;
         double scale = 1;  // world length of one unit here
+        /// Unit normal (either way round) of the surface the ray leaves, and
+        /// the distance beyond which a surface crossing that one is a hit
+        /// although nearer than tmin (kInf: the ray leaves no known surface).
+        Vec3 leaving;
+        double tcross = kInf;
+
+        /// Whether a candidate at t in (tcross, tmin] with unit `normal`
+        /// meets the surface the ray leaves at an angle.
+        bool Crosses(const Vec3& normal) const {
+            const double c = Dot(normal, leaving);
+            return c * c < kCoincidentCos2;
+        }
     };
 
     /// Our RTCIntersectContext extension; see the file comment. Lives on the
@@ -321,6 +343,8 @@ struct RayCore::Impl {
                 mapped.tmin = impl->tolerance / in.scale;
                 mapped.tmax = tmax / in.scale;
                 mapped.scale = in.scale;
+                mapped.tcross = world.tcross / in.scale;
+                if (world.tcross < kInf) mapped.leaving = Normalize(in.objectFromRender.Vector(world.leaving));
                 mappedInstance = instance;
             }
             return mapped;
@@ -419,6 +443,7 @@ struct RayCore::Impl {
     /// of the geometry if larger (far from the origin). Sets rounding allowances.
     double coordinateScale = 1;
     double tolerance = kFtiny;             // Scene::distanceTolerance
+    double crossTolerance = 0;             // ExactRay::tcross of a ray leaving a surface
     std::vector<Priority> priority;        // per surface
     Geometry world;
     std::vector<PrototypeData> prototypes;
@@ -523,7 +548,7 @@ struct RayCore::Impl {
     // share their work on the origin (as calls they cost measurable time,
     // docs/measured-choices.md).
     [[gnu::always_inline]] inline Query MakeQuery(const Vec3& org, const Vec3& dir, double tmax,
-                                                  RTCRay& ray) const;
+                                                  const Vec3* leaving, RTCRay& ray) const;
 
     /// How far a ray must be advanced before Embree sees it (0 near the
     /// scene), or kUnreachable when it cannot reach the scene at all. A
@@ -557,7 +582,8 @@ struct RayCore::Impl {
     static UserKind& ChooseUserKind(UserKind& all, UserKind& own, const std::vector<bool>& leftOut);
 
     /// Whether polygon plane p is a valid candidate for ray r: exact t =
-    /// num/denom in (r.tmin, r.tmax). Compared without dividing, because a
+    /// num/denom in (r.tmin, r.tmax), or in (r.tcross, r.tmin] if p crosses
+    /// the surface the ray leaves. Compared without dividing, because a
     /// division's latency stalls Embree's traversal in every filter call, and
     /// most calls reject (the surface the ray starts on).
     static bool PlaneCandidate(const ExactRay& r, const PolygonPlane& p, double& num,
@@ -565,9 +591,24 @@ struct RayCore::Impl {
         denom = Dot(p.normal, r.dir);
         if (std::fabs(denom) <= kFtiny) return false;  // parallel, as o_face.c
         num = p.offset - Dot(p.normal, r.org);
-        // tmax = kInf: inf·denom keeps the sign, so the far test passes.
-        return denom > 0 ? num > r.tmin * denom && num < r.tmax * denom
-                         : num < r.tmin * denom && num > r.tmax * denom;
+        // tmax = kInf: inf·denom keeps the sign, so the far test passes;
+        // tcross = kInf fails the near one.
+        if (denom > 0 ? !(num < r.tmax * denom) : !(num > r.tmax * denom)) return false;
+        if (denom > 0 ? num > r.tmin * denom : num < r.tmin * denom) return true;
+        return (denom > 0 ? num > r.tcross * denom : num < r.tcross * denom) &&
+               r.Crosses(p.normal);
+    }
+
+    /// Fn's nearest hit of `shape` for ray r under the same rule as
+    /// PlaneCandidate (no tmax).
+    template <typename Shape,
+              std::optional<ShapeHit> (*Fn)(const Shape&, const Vec3&, const Vec3&, double)>
+    static std::optional<ShapeHit> ShapeCandidate(const Shape& shape, const ExactRay& r) {
+        if (r.tcross < r.tmin) {
+            auto h = Fn(shape, r.org, r.dir, r.tcross);
+            if (!h || h->t > r.tmin || r.Crosses(h->normal)) return h;
+        }
+        return Fn(shape, r.org, r.dir, r.tmin);
     }
 };
 
@@ -625,7 +666,7 @@ void RayCore::Impl::UserIntersect(const RTCIntersectFunctionNArguments* args) {
     const Shape& shape = ShapeOf<Shape>(*kind, args->primID);
     const unsigned instID = args->context->instID[0];
     const ExactRay& r = q.RayIn<kInstanced>(instID);
-    const auto h = Fn(shape, r.org, r.dir, r.tmin);
+    const auto h = ShapeCandidate<Shape, Fn>(shape, r);
     if (!h || !(h->t < r.tmax) ||
         !q.Offer(kInstanced ? h->t * r.scale : h->t, Query::InstanceOf<kInstanced>(instID), surface,
                  -1, h->normal)) {
@@ -652,7 +693,7 @@ void RayCore::Impl::UserOccluded(const RTCOccludedFunctionNArguments* args) {
     if (!kInstanced && kind->surfaces[args->primID] == q.ignored) return;
     const Shape& shape = ShapeOf<Shape>(*kind, args->primID);
     const ExactRay& r = q.RayIn<kInstanced>(args->context->instID[0]);
-    const auto h = Fn(shape, r.org, r.dir, r.tmin);
+    const auto h = ShapeCandidate<Shape, Fn>(shape, r);
     if (h && h->t < r.tmax) {
         // Embree's convention for "occluded": tfar = -inf.
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
@@ -732,6 +773,7 @@ void RayCore::Impl::Build(const Scene& s) {
     }
     if (!(extent > 0)) extent = 1;
     coordinateScale = std::max(extent, MaxAbs(centre) + extent);
+    crossTolerance = kCrossingUlps * std::numeric_limits<double>::epsilon() * coordinateScale;
 
     priority.resize(s.surfaces.size());
     for (size_t i = 0; i < s.surfaces.size(); ++i) priority[i] = PriorityOfSurface(s.surfaces[i]);
@@ -1097,14 +1139,18 @@ std::vector<RTCBounds> RayCore::Impl::UserBoundsOf(const Geometry& geometry,
 // Queries.
 
 RayCore::Impl::Query RayCore::Impl::MakeQuery(const Vec3& org, const Vec3& dir, double tmax,
-                                              RTCRay& ray) const {
+                                              const Vec3* leaving, RTCRay& ray) const {
     Query q;
     rtcInitIntersectContext(&q.rtc);
     q.impl = this;
     q.org = org;
     q.dir = dir;
     q.tmax = tmax > 0 ? tmax : kInf;
-    q.world = ExactRay{org, dir, tolerance, q.tmax, 1.0};
+    q.world = ExactRay{org, dir, tolerance, q.tmax, 1.0, Vec3{}, kInf};
+    if (leaving) {
+        q.world.leaving = *leaving;
+        q.world.tcross = crossTolerance;
+    }
     q.mappedInstance = -1;
     // Embree's float distances are off by a few ulps of the largest
     // coordinate in play. The float ray starts `shift` behind the origin so
@@ -1162,7 +1208,8 @@ double RayCore::Impl::DistanceFromAfar(const Vec3& org, const Vec3& dir) const {
     return advance;
 }
 
-std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double tmaxIn) const {
+std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double tmaxIn,
+                                      const Vec3* leaving) const {
     // A ray from far outside the scene is first advanced, in double, to near
     // the scene: Embree's float rays lose precision with distance and must
     // stay within about 1.8e19 of the origin.
@@ -1172,7 +1219,8 @@ std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double
     const Vec3 org = orgIn + dir * advance;
     const double tmax = tmaxIn > 0 ? tmaxIn - advance : 0.0;
     RTCRayHit rayhit;
-    Impl::Query q = impl_->MakeQuery(org, dir, tmax, rayhit.ray);
+    // An advanced origin is on no surface.
+    Impl::Query q = impl_->MakeQuery(org, dir, tmax, advance == 0 ? leaving : nullptr, rayhit.ray);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -1261,10 +1309,10 @@ std::optional<RayCore::SurfaceSide> RayCore::IntersectSurfaceSide(int surface, c
 bool RayCore::HasTransmitting() const { return impl_->transmittingLayer.rtc != nullptr; }
 
 bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn, Occluders which,
-                       int ignored) const {
+                       int ignored, const Vec3* leaving) const {
     if (impl_->transmittingLayer.rtc && which == Occluders::All) {
-        return Occluded(orgIn, dir, tmaxIn, Occluders::Transmitting, ignored) ||
-               Occluded(orgIn, dir, tmaxIn, Occluders::Opaque, ignored);
+        return Occluded(orgIn, dir, tmaxIn, Occluders::Transmitting, ignored, leaving) ||
+               Occluded(orgIn, dir, tmaxIn, Occluders::Opaque, ignored, leaving);
     }
     if (which == Occluders::Transmitting && !impl_->transmittingLayer.rtc) return false;
     const double advance = impl_->DistanceToScene(orgIn, dir);
@@ -1304,7 +1352,7 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn, Occlud
     const Vec3 org = orgIn + dir * advance;
     const double tmax = tmaxIn > 0 ? tmaxIn - advance : 0.0;
     RTCRay ray;
-    Impl::Query q = impl_->MakeQuery(org, dir, tmax, ray);
+    Impl::Query q = impl_->MakeQuery(org, dir, tmax, advance == 0 ? leaving : nullptr, ray);
     q.ignored = ignored;
     rtcOccluded1(layer->rtc, &q.rtc, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();

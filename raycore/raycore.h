@@ -80,8 +80,16 @@ public:
     /// scene's Scene::distanceTolerance (Radiance's rule: distances <= FTINY
     /// are discarded). `dir` must be unit. Among hits within tol of each other, Radiance's coincidence rule picks the winner
     /// (material beats void, opaque beats transparent, later modifier wins).
+    ///
+    /// `leaving`, if given, is the unit normal (either way round) of the
+    /// surface `org` lies on. Then a surface that meets that one at an angle
+    /// (not coincident with it) is a hit also nearer than tol, down to the
+    /// rounding of the scene's coordinates: a ray from a floor point within
+    /// tol of a wall, towards the wall, hits the wall instead of passing
+    /// through it and out of the room (Radiance's FTINY rule lets it through).
     /// Thread-safe.
-    std::optional<Hit> Intersect(const Vec3& org, const Vec3& dir, double tmax) const;
+    std::optional<Hit> Intersect(const Vec3& org, const Vec3& dir, double tmax,
+                                 const Vec3* leaving = nullptr) const;
 
     /// Intersection with one of Scene::surfaces only (source rays aim at their source).
     std::optional<Hit> IntersectSurface(int surface, const Vec3& org, const Vec3& dir) const;
@@ -101,8 +109,10 @@ public:
     /// -1) is a surface the caller knows is not there, such as the light
     /// source a shadow ray stops short of: its test is skipped, which saves
     /// time and changes no answer. Thread-safe.
+    /// `leaving` as for Intersect.
     bool Occluded(const Vec3& org, const Vec3& dir, double tmax,
-                  Occluders which = Occluders::All, int ignored = -1) const;
+                  Occluders which = Occluders::All, int ignored = -1,
+                  const Vec3* leaving = nullptr) const;
 
     /// True if some surface or instance transmits shadow rays
     /// (TransmitsShadowRays); otherwise Occluders::Transmitting selects nothing.

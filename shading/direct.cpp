@@ -235,8 +235,10 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             // is not in the way (the ray stops short of its first hit on it,
             // or of its plane), so its test is skipped.
             if (!s_.transmitting ||
-                !s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Transmitting, src.surface)) {
-                if (!s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Opaque, src.surface)) {
+                !s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Transmitting, src.surface,
+                                  &ray.ron)) {
+                if (!s_.core.Occluded(ray.rop, c.dir, reach, Occluders::Opaque, src.surface,
+                                      &ray.ron)) {
                     ray.rcol += c.value;
                     nhits++;
                     tally.nhits++;
@@ -254,7 +256,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         // Something in between is followed through (opaque materials return
         // black, transparent ones transmit); with -oT every shadow ray is
         // followed so that it can be reported, as Radiance's SFOLLOW flag does.
-        if (auto hit = s_.core.Intersect(sray.org, sray.dir, 0.0);
+        if (auto hit = s_.core.Intersect(sray.org, sray.dir, 0.0, sray.Leaving());
             hit && (hit->instance >= 0 || hit->surface != src.surface || ts.traceShadows)) {
             sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
             // Shaded past the surface in between (Radiance's raycont()).

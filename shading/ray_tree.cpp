@@ -85,7 +85,7 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
     ++ts.stats.raysTraced;
     ray.rcol = Rgb();
     ray.mcol = Rgb();
-    if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax)) {
+    if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax, ray.Leaving())) {
         ray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
         Shade(ts, ray);
     } else if (ray.rmax > 0) {

@@ -68,6 +68,13 @@ struct TracedRay {
     double rmt = kFhuge;       // mirror distance
     double rxt = kFhuge;       // unmirrored distance
 
+    /// Normal (unit, either way round) of the surface this ray starts on, for
+    /// RayCore's `leaving`: its parent's hit when it starts there; null for a
+    /// primary ray and any other ray that starts on no known surface.
+    const Vec3* Leaving() const {
+        return parent && !parent->hitDistant && org == parent->rop ? &parent->ron : nullptr;
+    }
+
     /// Radiance's hastexture: |pert|² > FTINY².
     bool Textured() const { return Dot(pert, pert) > kFtiny * kFtiny; }
 

@@ -163,18 +163,43 @@ TEST(IrradianceCache, FailedHemisphereMakesNoRecordAndNoValue) {
     IrradianceCounters counters;
     Rng rng(4);
     int calls = 0;
-    // Every hit lies within the distance tolerance: every division fails.
-    const auto touching = [&](const Vec3&, const AmbientSampleShare&) {
+    // Every sample ray refused (as by -lr): every division fails.
+    const auto refused = [&](const Vec3&, const AmbientSampleShare&) {
         ++calls;
-        return std::optional<AmbientSample>(AmbientSample{Rgb::Grey(1), 1e-9});
+        return std::optional<AmbientSample>();
     };
-    const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, touching,
+    const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, refused,
                                   NeverOccluded);
     EXPECT_FALSE(r.value);
     EXPECT_EQ(r.source, IrradianceResult::Source::Failed);
     EXPECT_GT(calls, 0);
     EXPECT_TRUE(thread.newRecords.empty());
     EXPECT_EQ(cache.store()->size(), 0u);
+}
+
+/// Hits nearer than the distance tolerance (1e-6) are samples like any other:
+/// the ray core returns them only on a surface meeting the record's own at an
+/// angle (a wall at a floor point's edge, RayCore::Intersect's `leaving`).
+/// Refusing them failed the division and darkened such points; in the 0.999
+/// furnace, a few records at cube edges carried that loss up 50 levels.
+TEST(IrradianceCache, HitsNearerThanTheToleranceAreSamples) {
+    for (const RecordMethod method : {RecordMethod::Classic, RecordMethod::Hessian}) {
+        IrradianceSettings settings = Settings();
+        settings.method = method;
+        const IrradianceCache cache(settings, Store());
+        IrradianceThread thread;
+        IrradianceCounters counters;
+        Rng rng(4);
+        const auto touching = [&](const Vec3& dir, const AmbientSampleShare&) {
+            return std::optional<AmbientSample>(
+                AmbientSample{Rgb::Grey(1), dir.x > 0.5 ? 4e-7 : 1.0});
+        };
+        const auto r = cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, touching,
+                                      NeverOccluded);
+        ASSERT_TRUE(r.value);
+        EXPECT_NEAR(r.value->g, 1.0, 1e-12);
+        EXPECT_EQ(thread.newRecords.size(), 1u);
+    }
 }
 
 /// A floor at z = 0 under an open sky with a curb along x = 0.05, 0.01 high:

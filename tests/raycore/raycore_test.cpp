@@ -227,6 +227,74 @@ TEST(RayCore, RayStartingOnSurfaceFindsTheNextOne) {
     }
 }
 
+/// A ray leaving a floor point 3e-7 from a wall that stands on the floor,
+/// towards the wall, meets it 4.2e-7 away: nearer than the distance tolerance
+/// (1e-6), which Radiance's rule discards, so the ray used to pass through
+/// the wall and out of the room. Given the floor's normal (`leaving`), the
+/// wall is hit; a surface coincident with the floor (a decal 2e-7 above it)
+/// is still discarded, as is the floor itself.
+TEST(RayCore, RayLeavingASurfaceHitsAWallMeetingIt) {
+    SceneBuilder b;
+    const int m = b.AddMaterial(MaterialType::Plastic);
+    const int floor = b.AddPolygon({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, m);
+    b.AddPolygon({{0, -1, 2e-7}, {1, -1, 2e-7}, {1, 1, 2e-7}, {0, 1, 2e-7}}, m);
+    const int wall = b.AddPolygon({{1, -1, 0}, {1, 1, 0}, {1, 1, 1}, {1, -1, 1}}, m);
+    // A ball standing in the floor (centre on it): the floor meets it at right angles.
+    const int ball = b.AddSphere({-0.5, 0, 0}, 0.25, false, m);
+    RayCore core(b.scene());
+    const Vec3 up{0, 0, 1}, down{0, 0, -1};
+    const double gap = 3e-7;
+
+    const Vec3 nearWall{1 - gap, 0.2, 0};
+    const Vec3 towardsWall = Normalize({1, 0, 1});
+    EXPECT_FALSE(core.Intersect(nearWall, towardsWall, 0));  // Radiance's rule alone
+    EXPECT_FALSE(core.Occluded(nearWall, towardsWall, 0));
+    for (const Vec3* leaving : {&up, &down}) {
+        const auto h = core.Intersect(nearWall, towardsWall, 0, leaving);
+        ASSERT_TRUE(h);
+        EXPECT_EQ(h->surface, wall);
+        EXPECT_NEAR(h->t, gap * std::sqrt(2.0), 1e-15);
+        EXPECT_TRUE(core.Occluded(nearWall, towardsWall, 0, Occluders::All, -1, leaving));
+        EXPECT_TRUE(core.Occluded(nearWall, towardsWall, 1, Occluders::All, -1, leaving));
+        EXPECT_FALSE(core.Occluded(nearWall, towardsWall, 4e-7, Occluders::All, -1, leaving));
+        // Away from the wall: nothing, neither the floor nor the decal.
+        EXPECT_FALSE(core.Intersect(nearWall, Normalize({-1, 0, 1}), 0, leaving));
+        EXPECT_FALSE(core.Intersect(nearWall, up, 0, leaving));
+    }
+
+    const Vec3 nearBall{-0.25 + gap, 0, 0};
+    const Vec3 towardsBall = Normalize({-1, 0, 1});
+    const auto farSide = core.Intersect(nearBall, towardsBall, 0);  // through the near side
+    ASSERT_TRUE(farSide);
+    EXPECT_GT(farSide->t, 0.1);
+    const auto h = core.Intersect(nearBall, towardsBall, 0, &up);
+    ASSERT_TRUE(h);
+    EXPECT_EQ(h->surface, ball);
+    EXPECT_NEAR(h->t, gap * std::sqrt(2.0), 1e-12);
+    EXPECT_TRUE(core.Occluded(nearBall, towardsBall, 0, Occluders::All, -1, &up));
+
+    // Leaving the ball or the wall near the floor, the floor is hit; leaving
+    // the floor itself from a computed hit point, it is not found again.
+    const Vec3 onBall{-0.25, 0, gap}, ballNormal{1, 0, 0};
+    const auto fromBall = core.Intersect(onBall, Normalize({1, 0, -1}), 0, &ballNormal);
+    ASSERT_TRUE(fromBall);
+    EXPECT_EQ(fromBall->surface, floor);
+    EXPECT_FALSE(core.Intersect(onBall, Normalize({1, 0, -1}), 0));
+    std::mt19937 rng(5);
+    for (int i = 0; i < 1000; ++i) {
+        Vec3 d = RandomDirection(rng);
+        d.z = -std::fabs(d.z) - 0.05;
+        d = Normalize(d);
+        const auto first = core.Intersect({-0.9, 0.3, 0.5}, d, 0);
+        if (!first || first->surface != floor) continue;
+        const Vec3 out = d - first->normal * (2 * Dot(d, first->normal));
+        const auto next = core.Intersect(first->point, out, 0, &first->normal);
+        if (next) {
+            EXPECT_NE(next->surface, floor);
+        }
+    }
+}
+
 // Unit-scale box [-1,1]³ placed at `centre` and scaled by `scale`; rays from its
 // centre towards every vertex, every edge midpoint, many points exactly on
 // edges, and random directions, must all hit a wall at the analytic distance.
