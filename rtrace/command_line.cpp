@@ -380,9 +380,9 @@ constexpr OptionRow kOptionRows[] = {
     Int("-ad", "ambient divisions", [](RtraceOptions& o) -> int& { return o.ambient.divisions; }).Listed(),
     Int("-as", "ambient super-samples", [](RtraceOptions& o) -> int& { return o.ambient.superSamples; }).Listed(),
     // lazyrad's own; not Listed: -defaults stays Radiance's.
-    // -ah+ Hessian records at every level, -ah- (the default) classic ones,
-    // -ahm classic first-level records and Hessian deeper ones; a bare -ah is
-    // -ah+, as it was when -ah was a toggle that started off.
+    // -ah+ Hessian records at every level, -ah- classic ones, -ahm (the
+    // default) classic first-level records and Hessian deeper ones; a bare
+    // -ah is -ah+, as it was when -ah was a toggle.
     Attached("-ah", "ambient record methods (+ Hessian, - classic, m mixed)",
              [](RtraceOptions& o, std::string_view rest) {
                  const std::optional<bool> on = ToggleSuffix(rest);

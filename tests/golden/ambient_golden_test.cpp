@@ -19,16 +19,19 @@ using rt::testing::Luminance;
 using rt::testing::RunRows;
 const std::string kSource = rt::testing::kSourceDir;
 
-/// Both record methods: classic split-sphere (-ah-) and Radiance 5's Hessian (-ah+).
-constexpr const char* kMethods[] = {"-ah- ", "-ah+ "};
+/// Every choice of record methods: classic split-sphere (-ah-), Radiance 5's
+/// Hessian (-ah+), and classic first-level records with Hessian deeper ones
+/// (-ahm, the default).
+constexpr const char* kMethods[] = {"-ah- ", "-ah+ ", "-ahm "};
 
-class Furnace : public ::testing::TestWithParam<std::tuple<int, bool, bool>> {};
+/// (bounces, cached, index into kMethods)
+class Furnace : public ::testing::TestWithParam<std::tuple<int, bool, int>> {};
 
 /// A closed grey sphere lit only by -av: every ray sees rho^(n+1)·L and -I
 /// gives π·rho^n·L, exactly, whatever the sampling.
 TEST_P(Furnace, IsExact) {
-    const auto [bounces, cached, hessian] = GetParam();
-    const std::string opts = std::string(kMethods[hessian]) + "-ab " + std::to_string(bounces) +
+    const auto [bounces, cached, method] = GetParam();
+    const std::string opts = std::string(kMethods[method]) + "-ab " + std::to_string(bounces) +
                              (cached ? " -aa .1" : " -aa 0") +
                              " -av 1 1 1 -aw 0 " + kSource + "/scenes/furnace/furnace.rad";
     const double radiance = std::pow(0.5, bounces + 1);
@@ -45,12 +48,17 @@ TEST_P(Furnace, IsExact) {
 
 INSTANTIATE_TEST_SUITE_P(Bounces, Furnace,
                          ::testing::Combine(::testing::Values(1, 2, 3), ::testing::Bool(),
-                                            ::testing::Values(false)));
+                                            ::testing::Values(0)));
 // Hessian records up to -ab 2: the cached -ab 3 furnace alone takes a minute
 // under CI's sanitizers.
 INSTANTIATE_TEST_SUITE_P(HessianBounces, Furnace,
                          ::testing::Combine(::testing::Values(1, 2), ::testing::Bool(),
-                                            ::testing::Values(true)));
+                                            ::testing::Values(1)));
+// Mixed records: with the cache only (-aa 0 makes no records; its hemispheres
+// are the first level's, classic).
+INSTANTIATE_TEST_SUITE_P(MixedBounces, Furnace,
+                         ::testing::Combine(::testing::Values(1, 2, 3), ::testing::Values(true),
+                                            ::testing::Values(2)));
 
 /// Under a uniform sky of radiance 1 the irradiance just above the ground is π.
 TEST(Skyplane, IrradianceAboveGroundIsPi) {

@@ -246,11 +246,11 @@ TEST(RtraceOptionsParse, TogglesFollowRadianceSuffixes) {
     EXPECT_EQ(ErrorOf({"-h++", "s.rad"}), "command line error at '-h++'");
 }
 
-/// -ah (lazyrad's record methods): classic by default, + Hessian, - classic,
+/// -ah (lazyrad's record methods): mixed by default, + Hessian, - classic,
 /// m mixed, a bare -ah Hessian; a bad suffix is a one-line error, and -defaults
 /// does not list it.
 TEST(RtraceOptionsParse, RecordMethodsOption) {
-    EXPECT_EQ(ParseOptions({}).ambient.recordMethods, RecordMethods::Classic);
+    EXPECT_EQ(ParseOptions({}).ambient.recordMethods, RecordMethods::Mixed);
     EXPECT_EQ(ParseOptions({"-ah+"}).ambient.recordMethods, RecordMethods::Hessian);
     EXPECT_EQ(ParseOptions({"-ah"}).ambient.recordMethods, RecordMethods::Hessian);
     EXPECT_EQ(ParseOptions({"-ah-"}).ambient.recordMethods, RecordMethods::Classic);
