@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "raycore/raycore.h"
@@ -174,6 +175,56 @@ lamp polygon panel 0 0 12 0 0 6.99  0 2 6.99  2 2 6.99  2 0 6.99
     }
     EXPECT_GT(checked, 20000);
     EXPECT_GT(blocked, 2000);
+}
+
+/// RayCore's `leaving` rule (raycore_test's RayLeavingASurfaceHitsAWallMeetingIt)
+/// across instances: a world floor, and a wall and a ball in a prototype
+/// placed at twice its size, with a decal coincident with the floor. A ray leaving the floor 3e-7 (world units) from
+/// the instanced wall or ball, towards it, hits it; the tolerance and the
+/// crossing test are applied in the instance's own units.
+TEST(Instances, RayLeavingASurfaceHitsAnInstancedWallMeetingIt) {
+    Scene scene = BuildScene(Parse(std::string(kMaterials) +
+                                   "white polygon floor 0 0 12 -1 -1 0  4 -1 0  4 3 0  -1 3 0\n"),
+                             {});
+    const Scene object = BuildScene(
+        Parse(std::string(kMaterials) +
+              "white polygon wall 0 0 12 .5 0 0  .5 1 0  .5 1 1  .5 0 1\n"
+              "white sphere ball 0 0 4 .25 .5 0 .125\n"
+              "white polygon decal 0 0 12 0 0 .5e-7  .45 0 .5e-7  .45 .45 .5e-7  0 .45 .5e-7\n"),
+        {});
+    Prototype prototype;
+    prototype.file = "object";
+    prototype.surfaces = object.surfaces;
+    prototype.cubeOrigin = object.cubeOrigin;
+    prototype.cubeSize = object.cubeSize;
+    scene.prototypes.push_back(prototype);
+    Instance instance;
+    instance.prototype = 0;
+    instance.renderFromObject = ParseTransformArgs({"-s", "2", "-t", "1", "0", "0"}).transform;
+    instance.objectFromRender = Inverse(instance.renderFromObject);
+    scene.instances.push_back(instance);
+    scene.cubeSize = 0;
+    const RayCore core(scene);
+    const Vec3 up{0, 0, 1};
+    const double gap = 3e-7;
+    // The wall stands at x = 2, the ball's centre at (1.5, 1, 0), radius 0.25.
+    for (const auto& [org, dir, surface] :
+         {std::tuple{Vec3{2 - gap, 1, 0}, Normalize({1, 0, 1}), 0},
+          std::tuple{Vec3{1.75 + gap, 1, 0}, Normalize({-1, 0, 1}), 1}}) {
+        const auto through = core.Intersect(org, dir, 0);
+        EXPECT_TRUE(!through || through->t > 0.1) << surface;  // Radiance's rule alone
+        const auto h = core.Intersect(org, dir, 0, &up);
+        ASSERT_TRUE(h) << surface;
+        EXPECT_EQ(h->instance, 0);
+        EXPECT_EQ(h->surface, surface);
+        EXPECT_NEAR(h->t, gap * std::sqrt(2.0), 1e-12);
+        EXPECT_TRUE(core.Occluded(org, dir, 0.1, Occluders::All, -1, &up));
+        EXPECT_FALSE(core.Occluded(org, dir, 0.1));
+    }
+    // A decal 1e-7 above the floor (in the instance) is coincident with it:
+    // still discarded, as the floor's normal maps into the instance.
+    EXPECT_FALSE(core.Intersect({1.2, 0.2, 0}, up, 0, &up));
+    EXPECT_FALSE(core.Occluded({1.2, 0.2, 0}, up, 0, Occluders::All, -1, &up));
 }
 
 }  // namespace
