@@ -66,16 +66,21 @@ Scene WorldScene(const std::string& extra) {
     return BuildScene(objects, {});
 }
 
-/// The same, as one prototype and three instances of it.
-Scene InstancedScene(const std::string& extra) {
-    Scene scene = BuildScene(Parse(std::string(kMaterials) + extra), {});
-    const Scene object = BuildScene(Parse(std::string(kMaterials) + kObject), {});
+/// `object`'s surfaces as a prototype.
+Prototype PrototypeOf(const Scene& object) {
     Prototype prototype;
     prototype.file = "object";
     prototype.surfaces = object.surfaces;
     prototype.cubeOrigin = object.cubeOrigin;
     prototype.cubeSize = object.cubeSize;
-    scene.prototypes.push_back(prototype);
+    return prototype;
+}
+
+/// The same, as one prototype and three instances of it.
+Scene InstancedScene(const std::string& extra) {
+    Scene scene = BuildScene(Parse(std::string(kMaterials) + extra), {});
+    scene.prototypes.push_back(
+        PrototypeOf(BuildScene(Parse(std::string(kMaterials) + kObject), {})));
     for (const Placement& p : kPlacements) {
         Instance instance;
         instance.prototype = 0;
@@ -186,18 +191,12 @@ TEST(Instances, RayLeavingASurfaceHitsAnInstancedWallMeetingIt) {
     Scene scene = BuildScene(Parse(std::string(kMaterials) +
                                    "white polygon floor 0 0 12 -1 -1 0  4 -1 0  4 3 0  -1 3 0\n"),
                              {});
-    const Scene object = BuildScene(
+    scene.prototypes.push_back(PrototypeOf(BuildScene(
         Parse(std::string(kMaterials) +
               "white polygon wall 0 0 12 .5 0 0  .5 1 0  .5 1 1  .5 0 1\n"
               "white sphere ball 0 0 4 .25 .5 0 .125\n"
               "white polygon decal 0 0 12 0 0 .5e-7  .45 0 .5e-7  .45 .45 .5e-7  0 .45 .5e-7\n"),
-        {});
-    Prototype prototype;
-    prototype.file = "object";
-    prototype.surfaces = object.surfaces;
-    prototype.cubeOrigin = object.cubeOrigin;
-    prototype.cubeSize = object.cubeSize;
-    scene.prototypes.push_back(prototype);
+        {})));
     Instance instance;
     instance.prototype = 0;
     instance.renderFromObject = ParseTransformArgs({"-s", "2", "-t", "1", "0", "0"}).transform;
