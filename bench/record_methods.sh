@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Classic against Hessian records (rtrace -ah- / -ah+), with real Radiance 5.4a
+# Classic, Hessian and mixed records (rtrace -ah- / -ah+ / -ahm, the last the
+# default), with real Radiance 5.4a
 # on the same jobs, on this machine: records per ambient level, rays (lazyrad
 # only: hemisphere and specular + shadow rays), CPU seconds and
 # luminance error against converged references (the error has the reference's
@@ -56,6 +57,8 @@ for name in $jobs; do
     run "lazyrad classic seed $s" "$lz" -t 100000 -ah- -seed "$s" $opts "$scene"
     # shellcheck disable=SC2086
     run "lazyrad hessian seed $s" "$lz" -t 100000 -ah+ -seed "$s" $opts "$scene"
+    # shellcheck disable=SC2086
+    run "lazyrad mixed seed $s" "$lz" -t 100000 -ahm -seed "$s" $opts "$scene"
     sleep 1.1
     # shellcheck disable=SC2086
     run "radiance" "$RAD/rtrace" $opts "$tmp/scene.oct"
