@@ -122,8 +122,11 @@ struct HessianEstimate {
                               // of the form factor's Hessian. Radii use |λ| and do not
                               // care; the frame rotation's |λ| quirk (EllipseFromHessian)
                               // does, and is reproduced with this sign.
-    Vec3 gradient;            // 1/length: ≈ 0.99 × ∇E/E; zero when !radiometric
+    Vec3 gradient;            // 1/length: ≈ 0.99 × ∇E/E; zero when !radiometric or uniform
     bool radiometric = true;  // false: geometric fallback, no gradients or corral
+    /// The hemisphere's brightness is uniform within rounding: it has no
+    /// gradient, translational or rotational.
+    bool uniform = false;
 };
 /// Requires a complete hemisphere with ns >= 2.
 HessianEstimate EstimateHessian(const HessianHemisphere& hemisphere);

@@ -28,7 +28,9 @@ constexpr const char* kMethods[] = {"-ah- ", "-ah+ ", "-ahm "};
 class Furnace : public ::testing::TestWithParam<std::tuple<int, bool, int>> {};
 
 /// A closed grey sphere lit only by -av: every ray sees rho^(n+1)·L and -I
-/// gives π·rho^n·L, exactly, whatever the sampling.
+/// gives π·rho^n·L, exactly, whatever the sampling (bound 1e-5 relative: the
+/// 7 printed digits). The Hessian and mixed records met it only once a
+/// uniform hemisphere got no rotational gradient either (up to 3e-4 off).
 TEST_P(Furnace, IsExact) {
     const auto [bounces, cached, method] = GetParam();
     const std::string opts = std::string(kMethods[method]) + "-ab " + std::to_string(bounces) +
@@ -37,12 +39,12 @@ TEST_P(Furnace, IsExact) {
     const double radiance = std::pow(0.5, bounces + 1);
     for (const auto& row : RunRows(opts, "scenes/furnace/rays.txt")) {
         ASSERT_EQ(row.size(), 3u);
-        for (double c : row) EXPECT_NEAR(c, radiance, 1e-3 * radiance);
+        for (double c : row) EXPECT_NEAR(c, radiance, 1e-5 * radiance);
     }
     const double irradiance = 3.14159265358979 * std::pow(0.5, bounces);
     for (const auto& row : RunRows("-I " + opts, "scenes/furnace/points.txt")) {
         ASSERT_EQ(row.size(), 3u);
-        for (double c : row) EXPECT_NEAR(c, irradiance, 1e-3 * irradiance);
+        for (double c : row) EXPECT_NEAR(c, irradiance, 1e-5 * irradiance);
     }
 }
 
