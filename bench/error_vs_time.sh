@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates docs/error-vs-time.md, docs/data/*.csv and docs/plots/*.svg: error
+# Regenerates docs/error-vs-time.md (keeping its hand-written sections from
+# "## Dense jobs" on), docs/data/*.csv and docs/plots/*.svg: error
 # against wall time for every method on the five reference cases. About 5-10
 # minutes on a 2-core machine (Release build; run nothing else meanwhile).
 #
@@ -59,6 +60,10 @@ analyse() {
     }' "$1"
 }
 
+# The sections written by hand after the generated ones (from "## Dense jobs"
+# on: measurements of other scripts) are kept as they are.
+kept=$(mktemp); trap 'rm -f "$kept"' EXIT
+[ -f docs/error-vs-time.md ] && sed -n '/^## Dense jobs/,$p' docs/error-vs-time.md > "$kept"
 machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(awk '/MemTotal/ { printf "%.0f GB", $2 / 1048576 }' /proc/meminfo)"
 {
   cat <<EOF
@@ -119,6 +124,10 @@ green channel's mean). `bench/refcheck.sh A B` tests two references against
 their combined standard errors (z per point, chi², Wilson-Hilferty p-value).
 See docs/benchmarks.md for the check against `scenes/cornell/ref/floor_I_ab2.txt`.
 EOF
+  if [ -s "$kept" ]; then
+    echo
+    cat "$kept"
+  fi
 } > docs/error-vs-time.md
 rm -f docs/data/*.md
 echo "error_vs_time: wrote docs/error-vs-time.md" >&2
