@@ -73,7 +73,8 @@ Every speed claim comes with the error it buys. This page gives, for the five
 reference cases, the RMS relative error of luminance against the converged
 reference for each setting of \`rtrace\`, against wall time: pure path tracing
 (\`pt\`), no cache with one \`-ad\` hemisphere per bounce (\`aa0\`), and the
-irradiance cache at several \`-aa\`, with \`-n 2\` variants.
+irradiance cache at several \`-aa\`, with \`-n 2\` variants. The cache rows use the
+default record methods (mixed, \`-ahm\`, since 2026-12-02; the classic records before).
 
 - **Generated** by \`bench/error_vs_time.sh\` on $(date -u +%Y-%m-%d) with \`$rtrace\` (Release,
   \`scripts/build.sh release\`). Machine: $machine, a shared VM.
