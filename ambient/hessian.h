@@ -151,6 +151,8 @@ HessianEllipse EllipseFromHessian(const Matrix3& hessian, const Frame& frame, do
 /// changes E by the factor 1 + δ·a·(g[0]·u + g[1]·v). nullopt when the
 /// hemisphere is incomplete, has fewer than kMinHessianDivisions cells per
 /// axis or is black. For -aa 0 callers in the hemisphere's own frame.
+/// Radiance's estimate as it is: MakeHessianRecord gives a uniform hemisphere
+/// none (HessianEstimate::uniform).
 std::optional<std::array<double, 2>> HessianRotationalGradient(const HessianHemisphere& hemisphere,
                                                                const Vec3& u, const Vec3& v);
 

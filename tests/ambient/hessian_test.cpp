@@ -422,15 +422,15 @@ Tangent2 Project(const Matrix3& h, const Vec3& x, const Vec3& y) {
 // Every ray returns the same radiance from far away (a miss, stored at the
 // far limit): Ē is that radiance (to rounding), the Hessian and translational
 // gradient vanish (the only geometry is the far boundary of the triangulated
-// grid), so both radii are the maximum and the gradient 0. The rotational
-// gradient is 0 in expectation only: Radiance weights each sample by its own
-// tanθ, which the concentric map lets reach 2e6 next to the horizon, so single
-// hemispheres scatter widely; its mean over 200 hemispheres must be within 4
-// standard errors of 0.
+// grid), so both radii are the maximum and the gradient 0. Radiance's
+// rotational gradient is 0 in expectation only: it weights each sample by its
+// own tanθ, which the concentric map lets reach 2e6 next to the horizon, so
+// single hemispheres scatter widely (and, interpolated across a curved
+// surface's normals, made the sphere furnace up to 1.2e-3 off). A uniform
+// hemisphere's records get none: exactly 0 for each of 200 hemispheres.
 TEST(HessianRecord, UniformEnvironmentHasMaximumRadiiAndNoGradient) {
     const Rgb sky(0.3, 0.5, 0.7);
     const AmbientLimits limits = Limits(0.01, 0.8);
-    double sum[2] = {0, 0}, sumSq[2] = {0, 0};
     constexpr int kRuns = 200;
     for (int run = 0; run < kRuns; ++run) {
         Rng rng(11, static_cast<std::uint64_t>(run));
@@ -454,16 +454,8 @@ TEST(HessianRecord, UniformEnvironmentHasMaximumRadiiAndNoGradient) {
         EXPECT_LT(std::hypot(rec->posGradient[0], rec->posGradient[1]) * limits.maxRadius, 1e-4);
         EXPECT_EQ(rec->corral, 0u);
         EXPECT_EQ(rec->value, h.value);
-        for (int k = 0; k < 2; ++k) {
-            sum[k] += rec->dirGradient[k];
-            sumSq[k] += rec->dirGradient[k] * rec->dirGradient[k];
-        }
-    }
-    for (int k = 0; k < 2; ++k) {
-        const double mean = sum[k] / kRuns;
-        const double se = std::sqrt((sumSq[k] / kRuns - mean * mean) / kRuns);
-        std::cout << "uniform: mean gdir[" << k << "] " << mean << " ± " << se << "\n";
-        EXPECT_LT(std::fabs(mean), 4 * se);
+        EXPECT_EQ(rec->dirGradient[0], 0.0);
+        EXPECT_EQ(rec->dirGradient[1], 0.0);
     }
 }
 
