@@ -19,6 +19,11 @@ namespace rt {
 
 /// Radiance's generic epsilon (FTINY) in a double-precision build.
 inline constexpr double kFtiny = 1e-6;
+/// Rounding of positions, in double ulps of the largest coordinate in play:
+/// distances below this many ulps of it cannot separate a surface from itself.
+/// The floor of Scene::distanceTolerance, and the nearest a ray leaving a
+/// surface may meet one crossing it (RayCore::Intersect's `leaving`).
+inline constexpr double kCoordinateUlps = 1e3;
 /// Radiance's "infinite" distance (FHUGE): reported as the length of a miss.
 inline constexpr double kFhuge = 1e10;
 inline constexpr double kPi = 3.14159265358979323846;

@@ -101,11 +101,10 @@ constexpr double kFloatSlack = 1e-5;
 /// A ray that leaves a surface (RayCore::Intersect's `leaving`) hits another
 /// surface within the tolerance if that one meets it at an angle: normals
 /// more than ~1e-3 rad apart (cos² below this), and farther than the
-/// rounding of the scene's coordinates (this many double ulps of them). A
+/// rounding of the scene's coordinates (kCoordinateUlps of them). A
 /// coincident surface, or the ray's own surface found again by rounding,
 /// stays discarded as Radiance discards it.
 constexpr double kCoincidentCos2 = 1.0 - 1e-6;
-constexpr double kCrossingUlps = 1e3;
 
 /// What the coincidence rule needs to know about a surface's material.
 struct Priority {
@@ -773,7 +772,7 @@ void RayCore::Impl::Build(const Scene& s) {
     }
     if (!(extent > 0)) extent = 1;
     coordinateScale = std::max(extent, MaxAbs(centre) + extent);
-    crossTolerance = kCrossingUlps * std::numeric_limits<double>::epsilon() * coordinateScale;
+    crossTolerance = kCoordinateUlps * std::numeric_limits<double>::epsilon() * coordinateScale;
 
     priority.resize(s.surfaces.size());
     for (size_t i = 0; i < s.surfaces.size(); ++i) priority[i] = PriorityOfSurface(s.surfaces[i]);

@@ -28,10 +28,6 @@ namespace {
 /// oconv's OMARGIN: the cube is grown by this (times the tolerance scale) on
 /// every side.
 constexpr double kCubeMargin = 10 * kFtiny;
-/// Distance tolerances stay this many double ulps of the largest coordinate
-/// above zero, so that a small scene far from the origin still separates a
-/// surface from itself.
-constexpr double kCoordinateUlps = 1e3;
 
 /// Scene::distanceTolerance for geometry of extent `size` whose coordinates
 /// reach `maxCoordinate` in magnitude.
