@@ -53,12 +53,10 @@ for name in $jobs; do
   "$RAD/oconv" "$scene" > "$tmp/scene.oct"
   echo "== $name: rtrace $opts ($(wc -l < "$points") lines)"
   for s in $seeds; do
-    # shellcheck disable=SC2086
-    run "lazyrad classic seed $s" "$lz" -t 100000 -ah- -seed "$s" $opts "$scene"
-    # shellcheck disable=SC2086
-    run "lazyrad hessian seed $s" "$lz" -t 100000 -ah+ -seed "$s" $opts "$scene"
-    # shellcheck disable=SC2086
-    run "lazyrad mixed seed $s" "$lz" -t 100000 -ahm -seed "$s" $opts "$scene"
+    for method in "classic -ah-" "hessian -ah+" "mixed -ahm"; do
+      # shellcheck disable=SC2086
+      run "lazyrad ${method% *} seed $s" "$lz" -t 100000 "${method#* }" -seed "$s" $opts "$scene"
+    done
     sleep 1.1
     # shellcheck disable=SC2086
     run "radiance" "$RAD/rtrace" $opts "$tmp/scene.oct"
