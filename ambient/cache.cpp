@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <type_traits>
 
 #include "core/conventions.h"
 
@@ -37,6 +39,18 @@ AmbientCache::AmbientCache(const Vec3& cubeOrigin, double cubeSize, double accur
       limits_(limits),
       indexOrigin_(cubeOrigin),
       indexSize_(cubeSize > 0 ? cubeSize : 1.0) {}
+
+// Blocks are raw storage, filled in place: no record is constructed before it
+// is stored, and none needs destroying.
+static_assert(std::is_trivially_destructible_v<AmbientRecord>);
+
+void AmbientCache::RecordBlocks::push_back(const AmbientRecord& r) {
+    if (size_ % kBlock == 0) {
+        blocks_.emplace_back(static_cast<AmbientRecord*>(::operator new(kBlock * sizeof(AmbientRecord))));
+    }
+    std::construct_at(blocks_.back().get() + size_ % kBlock, r);
+    ++size_;
+}
 
 bool AmbientCache::Add(const AmbientRecord& record) {
     if (!IsUsable(record)) return false;
@@ -160,7 +174,10 @@ std::size_t AmbientCache::size() const {
 
 std::vector<AmbientRecord> AmbientCache::Records() const {
     std::shared_lock lock(mutex_);
-    return records_;
+    std::vector<AmbientRecord> all;
+    all.reserve(records_.size());
+    for (std::size_t i = 0; i < records_.size(); ++i) all.push_back(records_[i]);
+    return all;
 }
 
 AmbientCache::LogBrightSum AmbientCache::logBright() const {

@@ -219,7 +219,7 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
         thread.madeBright[static_cast<size_t>(level)].first += Bright(record->value);
         ++thread.madeBright[static_cast<size_t>(level)].second;
         if (store_->Add(*record)) {
-            thread.newRecords.push_back(*record);
+            if (thread.queueNewRecords) thread.newRecords.push_back(*record);
             if (counters.recordsPerLevel.size() <= static_cast<size_t>(level)) {
                 counters.recordsPerLevel.resize(level + 1);
             }

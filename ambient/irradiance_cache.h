@@ -57,6 +57,10 @@ struct IrradianceThread {
     int depth = 0;
     /// Records made by this thread and not yet handed out (for ambient files).
     std::vector<AmbientRecord> newRecords;
+    /// Whether new records are queued in `newRecords` at all. Without an
+    /// ambient file nobody takes them, and a queue that only grows costs a
+    /// fresh page (a page fault) for every 24 records as it doubles.
+    bool queueNewRecords = true;
     bool timing = false;
     /// Per ambient level: Σ bright(Ē) over the records this thread made, and
     /// their number; the typical Ē of a level for DeeperSampleFraction.

@@ -76,6 +76,7 @@ public:
             renderers_.back()->EnableTiming(options.reportSeconds > 0);
         }
         OpenAmbientFile(sceneFiles, options);
+        for (auto& r : renderers_) r->QueueNewRecords(file_.has_value());
     }
 
     RayResult TraceInput(const Vec3& org, const Vec3& dir, double rmax,

@@ -76,6 +76,11 @@ std::vector<AmbientRecord> Renderer::TakeNewRecords() {
     return std::exchange(impl_->state.ambient.newRecords, {});
 }
 
+void Renderer::QueueNewRecords(bool on) {
+    impl_->state.ambient.queueNewRecords = on;
+    if (!on) impl_->state.ambient.newRecords = {};
+}
+
 std::vector<AmbientRecord> Renderer::CacheRecords() const {
     const auto& cache = impl_->shared->setup.cache;
     return cache ? cache->Records() : std::vector<AmbientRecord>{};

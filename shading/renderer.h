@@ -80,6 +80,9 @@ public:
 
     /// Records this Renderer created since the last call, for the ambient file.
     std::vector<AmbientRecord> TakeNewRecords();
+    /// Whether new records are kept for TakeNewRecords() (default true); off
+    /// when no ambient file will take them.
+    void QueueNewRecords(bool on);
 
     /// A copy of every record in the (possibly shared) cache, e.g. to draw
     /// where the cache put them; empty without a cache.

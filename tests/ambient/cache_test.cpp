@@ -231,6 +231,22 @@ TEST(AmbientCache, InvalidRecordsAreIgnored) {
     EXPECT_EQ(cache.size(), 0u);
 }
 
+/// Records are stored in blocks; every one must come back, in insertion
+/// order, however many blocks they fill.
+TEST(AmbientCache, KeepsEveryRecordInOrderAcrossBlocks) {
+    AmbientCache cache = MakeCache();
+    constexpr int kCount = 1300;  // two and a half blocks
+    for (int i = 0; i < kCount; ++i) {
+        ASSERT_TRUE(cache.Add(FloorRecord({0.001 * i, 0, 0}, 0.5 + i, 0.5)));
+    }
+    const std::vector<AmbientRecord> all = cache.Records();
+    ASSERT_EQ(all.size(), static_cast<size_t>(kCount));
+    ASSERT_EQ(cache.size(), static_cast<size_t>(kCount));
+    for (int i = 0; i < kCount; ++i) {
+        EXPECT_EQ(all[i], FloorRecord({0.001 * i, 0, 0}, 0.5 + i, 0.5)) << i;
+    }
+}
+
 /// The octree must find exactly the records a scan of all records finds.
 TEST(AmbientCache, IndexAgreesWithExhaustiveScan) {
     std::mt19937 gen(7);

@@ -54,6 +54,23 @@ struct Furnace {
     }
 };
 
+/// Without a taker (no ambient file), new records go into the cache only.
+TEST(IrradianceCache, NewRecordsAreQueuedOnlyWhenAsked) {
+    for (const bool queue : {true, false}) {
+        auto store = Store();
+        const IrradianceCache cache(Settings(), store);
+        IrradianceThread thread;
+        thread.queueNewRecords = queue;
+        IrradianceCounters counters;
+        Rng rng(1);
+        Furnace env;
+        ASSERT_TRUE(
+            cache.Evaluate(At({0, 0, 0}), 1.0, thread, counters, rng, env, NeverOccluded).value);
+        EXPECT_EQ(store->size(), 1u);
+        EXPECT_EQ(thread.newRecords.size(), queue ? 1u : 0u);
+    }
+}
+
 TEST(IrradianceCache, FurnaceIsExactAndTheRecordIsReused) {
     const IrradianceCache cache(Settings(), Store());
     IrradianceThread thread;
