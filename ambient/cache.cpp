@@ -84,7 +84,15 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     // Radiance 5's normal limit (radians), widened for weak rays.
     double maxAngle = 10.0 * kPi / 180.0 + a;
     if (hat && q.rayWeight < 0.6) {
-        maxAngle = (maxAngle - 0.5 * kPi) * std::pow(q.rayWeight, 0.13) + 0.5 * kPi;
+        // Queries come with few distinct weights (one per bounce and sample
+        // share), so the last power is kept: std::pow costs as much as the
+        // rest of a typical lookup's tests.
+        thread_local double lastWeight = -1, lastPower = 0;
+        if (q.rayWeight != lastWeight) {
+            lastWeight = q.rayWeight;
+            lastPower = std::pow(q.rayWeight, 0.13);
+        }
+        maxAngle = (maxAngle - 0.5 * kPi) * lastPower + 0.5 * kPi;
     }
     std::shared_lock lock(mutex_);
     // A record answers only queries of its own bounce depth: its value holds

@@ -412,6 +412,30 @@ double AtanOverX(double z) {
     return r0 + r1 * z8;
 }
 
+double AngleOverSine(double r01, double cc) {
+    // atan2 rather than Radiance's acos of the cosine, which loses half its
+    // digits for the small angles between neighbours. Those angles are mostly
+    // below 14° (tan <= 1/4), where the series gives atan(x)/x · 1/r01 with
+    // x² = cc/r01², as exact and without std::atan2, the square root or two
+    // divisions (three edges per hemisphere ray). Up to 56° (tan <= 1.5), as
+    // coarse hemispheres' neighbours are, the angle is atan(c) + atan(t) with
+    // t = (x − c)/(1 + c·x) for c = 1/2 or 1: |t| <= 0.23, where the same
+    // series is as exact, for one square root and division.
+    if (r01 > 0 && cc <= 0.0625 * r01 * r01) {
+        const double ir = 1.0 / r01;
+        return AtanOverX(cc * ir * ir) * ir;
+    }
+    const double rc = std::sqrt(cc);
+    if (r01 > 0 && cc <= 2.25 * r01 * r01) {
+        constexpr double kAtanHalf = 0.46364760900080611621;  // atan(1/2)
+        const bool low = rc <= 0.7 * r01;                     // x <= 0.7: c = 1/2
+        const double c = low ? 0.5 : 1.0;
+        const double t = (rc - c * r01) / (r01 + c * rc);
+        return ((low ? kAtanHalf : 0.25 * kPi) + t * AtanOverX(t * t)) / rc;
+    }
+    return std::atan2(rc, r01) / rc;
+}
+
 void EdgeSums::Add(const Vec3& r0, const Vec3& r1, double s0, double s1, const Vec3& n,
                    double coefficient) {
     const Vec3 e = r1 - r0;
@@ -421,21 +445,8 @@ void EdgeSums::Add(const Vec3& r0, const Vec3& r1, double s0, double s1, const V
     const double er0 = Dot(e, r0);
     const double er1 = Dot(e, r1);
     const double se = 1.0 / ee;
-    // I1 = angle(r0, r1)/|c|; atan2 rather than Radiance's acos of the cosine,
-    // which loses half its digits for the small angles between neighbours.
-    // Those angles are mostly below 14° (tan <= 1/4), where the series gives
-    // I1 = atan(x)/x · 1/(r0·r1) with x² = |c|²/(r0·r1)², as exact and without
-    // std::atan2, the square root or two divisions (three edges per
-    // hemisphere ray).
-    const double r01 = Dot(r0, r1);
-    double i1;
-    if (r01 > 0 && cc <= 0.0625 * r01 * r01) {
-        const double ir = 1.0 / r01;
-        i1 = AtanOverX(cc * ir * ir) * ir;
-    } else {
-        const double rc = std::sqrt(cc);
-        i1 = std::atan2(rc, r01) / rc;
-    }
+    // I1 = angle(r0, r1)/|c|.
+    const double i1 = AngleOverSine(Dot(r0, r1), cc);
     const double icc = 1.0 / cc;
     const double i2 = (er1 * s1 - er0 * s0 + ee * i1) * 0.5 * icc;
     const double j2 = (0.5 * (s0 - s1) - er0 * i2) * se;

@@ -199,6 +199,10 @@ FormFactorEdge FormFactorEdgeTerms(const Vec3& r0, const Vec3& r1, const Vec3& n
 double AtanOverX(double z);
 inline double AtanSmall(double x) { return x * AtanOverX(x * x); }
 
+/// angle(r0, r1)/|r0 × r1| from r01 = r0·r1 and cc = |r0 × r1|² > 0, within
+/// a few ulps of std::atan2(√cc, r01)/√cc and mostly without calling it.
+double AngleOverSine(double r01, double cc);
+
 /// A running sum of coefficient × FormFactorEdgeTerms over many edges, kept
 /// without the constant factors (1/2π, −1/π) and with the Hessian's six
 /// distinct entries only, which a hemisphere's ~3·ns² edges would otherwise
