@@ -201,7 +201,8 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
     const int n = static_cast<int>(contribs.size());
     // Tail sums: tail[k] = Σ_{m >= k} bright_m.
     auto& tail = scratch.tail;
-    tail.assign(n + 1, 0.0);
+    tail.resize(n + 1);  // every entry is written below: no need to clear
+    tail[n] = 0.0;
     for (int k = n - 1; k >= 0; --k) tail[k] = tail[k + 1] + contribs[k].bright;
 
     const int nshadcheck =

@@ -71,7 +71,9 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
         // deep bounces came out dark (README, "Differences").
         TracedRay child;
         tree_.StartChild(ts, child, ray, kAmbientRay, nullptr);
-        child.rweight = ray.rweight * std::fmin(1.0, Intens(sampleCoef));
+        // std::min(1.0, x) is std::fmin's value for every x, NaN included,
+        // without its library call (one per hemisphere ray).
+        child.rweight = ray.rweight * std::min(1.0, Intens(sampleCoef));
         child.rcoef = sampleCoef;
         const int lr = s_.shading.limits.reflections;
         if (lr != 0 && child.rlvl > std::abs(lr)) return std::nullopt;
@@ -80,7 +82,7 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
         // the subdivision distance and turn lamps partly hidden by an edge
         // into all-or-nothing points, which darkens penumbrae seen from the
         // hemisphere (README, "Differences").
-        child.sourceWeight = ray.sourceWeight * std::fmin(1.0, Intens(coefficient));
+        child.sourceWeight = ray.sourceWeight * std::min(1.0, Intens(coefficient));
         child.org = ray.rop;
         child.dir = dir;
         tree_.Trace(ts, child);

@@ -4,6 +4,7 @@
 // sourcehit() and the -I/-i irradiance modes (radiance-notes.md §1.9, §2.5).
 #include "shading/ray_tree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -32,7 +33,7 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
     child.depth = parent.depth + 1;
     child.rlvl = parent.rlvl + ((type & kReflectionTypes) ? 1 : 0);
     child.rcoef = coef ? *coef : Rgb(1, 1, 1);
-    double w = coef ? std::fmin(1.0, Intens(*coef)) : 1.0;
+    double w = coef ? std::min(1.0, Intens(*coef)) : 1.0;
     child.rweight = parent.rweight * w;
     child.sourceWeight = parent.sourceWeight * w;
     if (type & kReflectionTypes) {
