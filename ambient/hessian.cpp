@@ -76,21 +76,26 @@ std::size_t Index(int ns, int i, int j) {
 
 /// Radiance's ambcollision(): whether unit `dir` for cell (i, j) lies within
 /// π/(4ns) of the hit direction of an already sampled neighbour. Coincident
-/// directions would make the triangles between them degenerate.
+/// directions would make the triangles between them degenerate. The first
+/// pass samples the cells last first, so only the neighbours after (i, j) in
+/// row-major order can have been sampled: (i, j+1) and the three of row i+1.
 bool Collides(const HessianHemisphere& h, int i, int j, const Vec3& dir) {
     const double limit = kPi / (4.0 * h.ns);
     const double cosLimit = 1.0 - 0.5 * limit * limit;
     const double cosLimit2 = cosLimit * cosLimit;
-    for (int ii = std::max(0, i - 1); ii <= std::min(h.ns - 1, i + 1); ++ii) {
+    const auto near = [&](int ii, int jj) {
+        const HessianCell& c = h.At(ii, jj);
+        if (c.samples == 0)
+            return false;
+        // Dot >= cosLimit·|offset| (cosLimit > 0), squared to spare a sqrt.
+        const double d = Dot(c.offset, dir);
+        return d > 0 && d * d >= cosLimit2 * LengthSquared(c.offset);
+    };
+    if (j + 1 < h.ns && near(i, j + 1))
+        return true;
+    if (i + 1 < h.ns) {
         for (int jj = std::max(0, j - 1); jj <= std::min(h.ns - 1, j + 1); ++jj) {
-            if (ii == i && jj == j)
-                continue;
-            const HessianCell& c = h.At(ii, jj);
-            if (c.samples == 0)
-                continue;
-            // Dot >= cosLimit·|offset| (cosLimit > 0), squared to spare a sqrt.
-            const double d = Dot(c.offset, dir);
-            if (d > 0 && d * d >= cosLimit2 * LengthSquared(c.offset))
+            if (near(i + 1, jj))
                 return true;
         }
     }
