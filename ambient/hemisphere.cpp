@@ -117,8 +117,8 @@ class DivisionDirections {
         if (!small_) return;
         start_.resize(static_cast<size_t>(columns));
         for (int p = 0; p < columns; ++p) {
-            const double phi = 2.0 * kPi * p / columns;
-            start_[static_cast<size_t>(p)] = {std::cos(phi), std::sin(phi)};
+            auto& [c, s] = start_[static_cast<size_t>(p)];
+            SinCos(2.0 * kPi * p / columns, c, s);
         }
     }
 
@@ -135,9 +135,9 @@ class DivisionDirections {
             cosPhi = c0 * c - s0 * s;
             sinPhi = s0 * c + c0 * s;
         } else {
-            const double phi = 2.0 * kPi * (p + xi1) / columns_;
-            cosPhi = std::cos(phi);
-            sinPhi = std::sin(phi);
+            // Few columns (deeper levels, small -ad): a column is too wide for
+            // SinCosSmall, but SinCos still spares std::cos and std::sin.
+            SinCos(2.0 * kPi * (p + xi1) / columns_, cosPhi, sinPhi);
         }
         return frame_.ToWorld({cosPhi * sinTheta, sinPhi * sinTheta, cosTheta});
     }
@@ -157,10 +157,11 @@ Frame RandomFrame(const Vec3& n, Rng& rng) {
     const Frame fixed = Frame::Around(n);
     const Vec3& u0 = fixed.u;
     const Vec3& v0 = fixed.v;
-    const double azimuth = 2.0 * kPi * rng.Uniform();
+    double cosAzimuth, sinAzimuth;
+    SinCos(2.0 * kPi * rng.Uniform(), cosAzimuth, sinAzimuth);
     Frame frame;
     frame.n = n;
-    frame.u = Normalize(u0 * std::cos(azimuth) + v0 * std::sin(azimuth));
+    frame.u = Normalize(u0 * cosAzimuth + v0 * sinAzimuth);
     frame.v = Cross(n, frame.u);
     return frame;
 }
@@ -393,7 +394,9 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     h.value = sum * (1.0 / (static_cast<double>(rows) * columns));
 
     const double b = Bright(h.value);
-    if (h.complete && b > kFtiny) {
+    // Only records use the gradients: without the cache (-aa 0, a hemisphere
+    // per shading point) their per-column sines and cosines would be wasted.
+    if (h.complete && b > kFtiny && options.caching) {
         // Relative gradients: E = π·Ē, so ∇E / E = ∇E / (π·bright(Ē)).
         const double toRelative = 1.0 / (kPi * b);
         h.posGradient = TranslationalGradient(divs, h.frame) * toRelative;

@@ -82,6 +82,7 @@ struct Hemisphere {
     double inverseDistanceSum = 0;  // Σ 1/d over the first sample of each division
     int distanceCount = 0;          // how many samples that sum has
     Frame frame;              // u, v, n used for the divisions
+    // Gradients are for records: zero without the cache (options.caching false).
     Vec3 posGradient;         // relative translational gradient, tangent to n (1/length)
     Vec3 dirGradient;         // relative rotational gradient, tangent to n (1/radian)
     /// For the leak test's corral bits (ambient/leak.h), when complete and
