@@ -95,8 +95,8 @@ public:
 private:
     /// The records, in insertion order, in fixed blocks that never move: a
     /// doubling vector would copy them all at each growth and touch fresh
-    /// pages for the copy (on the virtual machines measured, a first touch
-    /// of a page costs about 10 µs, as much as tracing 50 rays).
+    /// pages for the copy, and on a virtual machine a page's first touch can
+    /// cost as much as tracing tens of rays (docs/measured-choices.md).
     class RecordBlocks {
       public:
         RecordBlocks() = default;
