@@ -13,6 +13,36 @@ target_compile_options(rt_warnings INTERFACE
 # (Debian's linker keeps every library named on the command line by default).
 add_link_options(LINKER:--as-needed)
 
+# Profile-guided optimisation (scripts/build.sh release): "generate" builds an
+# instrumented program that writes branch and call counts to RT_PGO_DIR when it
+# exits; "use" compiles with those counts. Object paths are taken relative to
+# the build folder (-fprofile-prefix-path), so an instrumented build in one
+# folder feeds the real build in another. Functions the training jobs never ran
+# are optimised as without a profile (-fprofile-partial-training), and a
+# profile older than the source only costs speed, so it warns instead of failing.
+set(RT_PGO "" CACHE STRING "Profile-guided optimisation: generate, use, or empty for none")
+set(RT_PGO_DIR "" CACHE PATH "Folder of the profile (.gcda files) for RT_PGO")
+if(RT_PGO)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    message(FATAL_ERROR "RT_PGO needs GCC (its .gcda profile format)")
+  endif()
+  if(NOT RT_PGO_DIR)
+    message(FATAL_ERROR "RT_PGO needs RT_PGO_DIR, the profile folder")
+  endif()
+  if(RT_PGO STREQUAL "generate")
+    # One thread trains, so the counters need no atomic updates.
+    add_compile_options(-fprofile-generate=${RT_PGO_DIR} -fprofile-update=single
+                        -fprofile-prefix-path=${CMAKE_BINARY_DIR})
+    add_link_options(-fprofile-generate=${RT_PGO_DIR})
+  elseif(RT_PGO STREQUAL "use")
+    add_compile_options(-fprofile-use=${RT_PGO_DIR} -fprofile-partial-training
+                        -fprofile-prefix-path=${CMAKE_BINARY_DIR}
+                        -Wno-missing-profile -Wno-error=coverage-mismatch)
+  else()
+    message(FATAL_ERROR "RT_PGO must be generate, use or empty, not '${RT_PGO}'")
+  endif()
+endif()
+
 if(RT_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer
                       -fno-sanitize-recover=undefined)

@@ -1,16 +1,44 @@
 #!/usr/bin/env bash
-# Configures and builds lazyrad. Usage: scripts/build.sh [release|sanitize]
-#   release  (default) build/      Release, what every measurement uses
+# Configures and builds lazyrad. Usage: scripts/build.sh [release|sanitize|plain]
+#   release  (default) build/      Release with profile-guided optimisation, what
+#                                  every measurement uses (below)
 #   sanitize           build-asan/ AddressSanitizer + UndefinedBehaviorSanitizer,
 #                                  warnings as errors (what CI tests)
+#   plain              build-plain/ Release without the profile, for quick builds
+#
+# release is built in three steps: an instrumented rtrace in build-pgo/, the
+# training jobs of scripts/pgo-train.sh, which leave their branch and call
+# counts in build-pgo/profile/, then build/ compiled with those counts. The
+# training is deterministic, so an unchanged source gives the same profile and
+# build/ is rebuilt incrementally; a new profile rebuilds build/ whole, as its
+# objects were compiled with the old one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kind=${1:-release}
 jobs=$(nproc 2>/dev/null || echo 2)
 case "$kind" in
-  release)  dir=build;      flags=(-DCMAKE_BUILD_TYPE=Release) ;;
-  sanitize) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=ON -DRT_WERROR=ON) ;;
-  *) echo "build.sh: unknown build kind '$kind' (release or sanitize)" >&2; exit 1 ;;
+  release)
+    profile=$PWD/build-pgo/profile
+    cmake -S . -B build-pgo -DCMAKE_BUILD_TYPE=Release -DRT_PGO=generate \
+          -DRT_PGO_DIR="$profile" -DRT_BUILD_TESTS=OFF -DRT_BUILD_BENCHMARKS=OFF >/dev/null
+    cmake --build build-pgo --target rtrace -j "$jobs"
+    rm -rf "$profile"  # the counts of a new run are added to any left from before
+    scripts/pgo-train.sh build-pgo/bin/rtrace
+    digest=$(cd "$profile" && find . -name '*.gcda' -print0 | sort -z | xargs -0 md5sum | md5sum)
+    cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DRT_PGO=use -DRT_PGO_DIR="$profile" >/dev/null
+    if [ "$(cat build/pgo-profile.md5 2>/dev/null)" != "$digest" ]; then
+      cmake --build build --target clean
+    fi
+    cmake --build build -j "$jobs"
+    echo "$digest" > build/pgo-profile.md5
+    ;;
+  sanitize)
+    cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRT_SANITIZE=ON -DRT_WERROR=ON >/dev/null
+    cmake --build build-asan -j "$jobs"
+    ;;
+  plain)
+    cmake -S . -B build-plain -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build build-plain -j "$jobs"
+    ;;
+  *) echo "build.sh: unknown build kind '$kind' (release, sanitize or plain)" >&2; exit 1 ;;
 esac
-cmake -S . -B "$dir" "${flags[@]}" >/dev/null
-cmake --build "$dir" -j "$jobs"
