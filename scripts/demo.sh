@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The main job on the default scene, on a fresh machine: installs what is
-# missing, builds (Release), then runs a daylight-factor calculation the way
-# honeybee runs it - rtrace on a frozen octree (made by Radiance's oconv from
-# a gensky CIE overcast sky and a room with a window), 96 work-plane sensors -
-# and prints each sensor's daylight factor with its error against real
-# Radiance's converged reference.
+# missing, builds (Release, profile-guided: scripts/build.sh), then runs a
+# daylight-factor calculation the way honeybee runs it - rtrace on a frozen
+# octree (made by Radiance's oconv from a gensky CIE overcast sky and a room
+# with a window), 96 work-plane sensors - and prints each sensor's daylight
+# factor with its error against real Radiance's converged reference.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
