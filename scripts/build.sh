@@ -25,7 +25,7 @@ case "$kind" in
     # A profile is made for one instrumented program and training: rebuilt
     # (and build/ with it) only when either changed. The counts themselves
     # cannot tell: two runs of the same training leave different counts in
-    # some files (22 of 53 once), so they are not compared.
+    # some files, so they are not compared.
     stamp=$(md5sum build-pgo/bin/rtrace scripts/pgo-train.sh | md5sum)
     if [ ! -d "$profile" ] || [ "$(cat build/pgo-profile.md5 2>/dev/null)" != "$stamp" ]; then
       rm -rf "$profile"  # the counts of a new run are added to any left from before

@@ -8,8 +8,10 @@
 # kind of settings, a picture's rays, a frozen octree with a gensky sky and
 # its .cal functions, curved surfaces, metal, trans and glass, several kinds of
 # source - but none of the timed jobs of bench/side_by_side.sh: the cornell
-# floor points and the daylit work plane at Radiance's defaults are not in it,
-# so their speed-ups are not a replay of the training (README, "Speed").
+# floor points and the daylit room's 96 work-plane points are not in it (its
+# dense grid is), the cornell edges and the mixed room only at other settings,
+# so the table's speed-ups are not a replay of the training (README,
+# "Profile-guided build").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rt=$1
