@@ -130,7 +130,11 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         const double cosNormals = Dot(r.normal, q.normal);
         if (cosNormals <= 0) return;
         const Vec3 delta = q.point - r.position;
-        const double chord2 = 2.0 - 2.0 * cosNormals;
+        // Two unit normals of one plane can have a dot product an ulp above 1
+        // (|n|² rounds above 1); the square root below must not see the
+        // negative chord that gives, or the weight is NaN and the record,
+        // which is exactly right for the query, is refused.
+        const double chord2 = std::max(0.0, 2.0 - 2.0 * cosNormals);
         // The "behind" test: Radiance 5 measures along the record's own
         // normal; the classic rule along the mean of the two normals.
         if (hat ? chord2 >= maxAngle * maxAngle || Dot(delta, r.normal) < -behindTolerance

@@ -112,6 +112,37 @@ TEST(AmbientCache, HatWeightsAsRadiance5) {
     }
 }
 
+/// A unit normal whose dot product with itself rounds above 1 (the short
+/// block's face in a frozen cornell octree had one) gave a negative chord,
+/// a NaN hat weight, and a refused record: every query on that face made its
+/// own, 1 850 records where 444 do. Both weightings must use such a record.
+TEST(AmbientCache, NormalWithDotAboveOneIsStillAccepted) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    Vec3 n;
+    for (int k = 0; k < 100000; ++k) {
+        n = Normalize(Vec3(u(rng), u(rng), u(rng)));
+        if (Dot(n, n) > 1.0) break;
+    }
+    ASSERT_GT(Dot(n, n), 1.0) << "no normal with |n|² above 1 found";
+    // Any unit vector perpendicular to n.
+    const Vec3 axis = Normalize(std::abs(n.x) < 0.9 ? Cross(n, Vec3(1, 0, 0)) : Cross(n, Vec3(0, 1, 0)));
+    for (const RecordWeighting weighting : {RecordWeighting::Hat, RecordWeighting::SplitSphere}) {
+        AmbientCache c(Vec3(-10, -10, -10), 20, 0.2, AmbientLimits{0.01, 5}, weighting);
+        AmbientRecord r = FloorRecord({0, 0, 0}, 0.5, 0.8);
+        r.normal = n;
+        r.uAxis = axis;
+        ASSERT_TRUE(c.Add(r));
+        AmbientQuery q = FloorQuery(axis * 0.02);
+        q.normal = q.shadingNormal = n;
+        int used = 0;
+        const auto v = c.Interpolate(q, &used);
+        ASSERT_TRUE(v) << static_cast<int>(weighting);
+        EXPECT_EQ(used, 1);
+        EXPECT_DOUBLE_EQ(v->g, 0.5);
+    }
+}
+
 /// -ahm: the first level's records are weighed by split spheres, the deeper
 /// levels' by Radiance 5's hat. A record 15° off the query's normal passes
 /// the hat's 21.5° limit but not the split sphere's error bound (0.18 > 0.2
