@@ -7,7 +7,8 @@
 # section of docs/benchmarks.md, naming the machine and the date.
 #
 #   bench/side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]
-#     JOBS  subset of: floor edges daylit floor_fast mixed (default all)
+#     JOBS  subset of: floor edges daylit floor_fast mixed floor_fast_oct
+#           (default all)
 #
 # Every speed-up is a ratio measured in this run; the absolute times are only
 # for reading the table. Lazyrad-only options can be passed through a wrapper
@@ -18,7 +19,7 @@ write=0 pairs=3
 while getopts "wn:" o; do case $o in w) write=1 ;; n) pairs=$OPTARG ;; *) exit 2 ;; esac; done
 shift $((OPTIND - 1))
 lz=$(realpath "${1:?usage: side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]}")
-jobs=${2:-floor edges daylit floor_fast mixed}
+jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct}
 sbs=$root/../shared/tools/side-by-side
 [ -x "$sbs" ] || { echo "side_by_side.sh: $sbs not found (needs ../shared)" >&2; exit 2; }
 defaults="-ad 1024 -as 512 -aa .1 -ar 256"
@@ -29,6 +30,10 @@ job() {  # name -> "description|options|scene|points|reference or -"
     edges) echo "cornell edges, 40 points|-h -I -ab 2 $defaults|$s/cornell/cornell.rad|$s/cornell/edges.pts|$s/cornell/ref/edges_I_ab2.txt" ;;
     daylit) echo "daylit work plane, 96 points|-h -I -ab 4 $defaults|$s/daylit_room/daylit_room.rad|$s/daylit_room/workplane.pts|$s/daylit_room/ref/workplane_I_ab4.txt" ;;
     floor_fast) echo "cornell floor, fast settings|-h -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64|$s/cornell/cornell.rad|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
+    # The same job from a frozen octree (oconv -f, as honeybee's and rad's
+    # octrees are), given to both programs: its rounded reals once doubled
+    # lazyrad's records (README, "Frozen octrees").
+    floor_fast_oct) echo "cornell floor, fast settings, frozen octree|-h -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64|$root/tests/data/octree/cornell_frozen.oct|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
     mixed) echo "mixed room (curved, metal, trans, glass, 5 source kinds), 120 points|-h -I -ab 2 $defaults|$s/mixed/mixed.rad|$s/mixed/workplane.pts|-" ;;
     *) echo "side_by_side.sh: unknown job '$1'" >&2; exit 2 ;;
   esac
