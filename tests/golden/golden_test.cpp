@@ -192,6 +192,16 @@ TEST(GoldenOctree, FrozenDaylitRoomMatchesRadianceOnTheSameOctree) {
                   kOctrees + "/daylit_room_frozen_ab0.txt");
 }
 
+/// Frozen octrees crossed with every shape and the source kinds: the mixed
+/// room's spheres (one a light), cylinders, rings, cone, metal, glass and trans
+/// screen, hit by rays aimed at them. -dt 0 and -ss 0 keep Radiance's output
+/// deterministic (tests/data/octree/make_octrees.sh).
+TEST(GoldenOctree, FrozenMixedRoomMatchesRadianceOnTheSameOctree) {
+    CompareOutput("mixed_frozen.oct",
+                  InOctreeFolder("-h -ab 0 -dt 0 -ss 0 -ovlpnNm mixed_frozen.oct < mixed_room.rays"),
+                  kOctrees + "/mixed_frozen_ab0.txt");
+}
+
 /// A frozen octree's reals are rounded, so a plane's unit normal can have a
 /// dot product with itself an ulp above 1; second-bounce records on such a
 /// plane were all refused (a NaN weight), and the frozen cornell octree made

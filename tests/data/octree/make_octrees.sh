@@ -15,6 +15,8 @@ oconv $scenes/cornell/cornell.rad > cornell.oct
 oconv -f $scenes/cornell/cornell.rad > cornell_frozen.oct
 oconv $scenes/daylit_room/daylit_room.rad > daylit_room.oct
 oconv -f $scenes/daylit_room/daylit_room.rad > daylit_room_frozen.oct
+# Curved surfaces, metal, glass, a trans screen and five kinds of source.
+oconv -f $scenes/mixed/mixed.rad > mixed_frozen.oct
 # oconv -i: the cornell box plus a lamp, added to an existing octree.
 oconv -i cornell.oct lamp.rad > cornell_plus_lamp.oct
 # A forced cube (oconv -b), larger than the scene: -ar must follow it. Frozen,
@@ -24,6 +26,11 @@ oconv -f -b -10 -10 -10 40 $scenes/cornell/cornell.rad > cornell_cube40.oct
 rtrace -h -ab 0 -ovlpnNm cornell_frozen.oct < $scenes/cornell/cam32.rays > cornell_frozen_ab0.txt
 rtrace -h -ab 0 -ovlpnNm daylit_room_frozen.oct < $scenes/daylit_room/cam32x24.rays \
   > daylit_room_frozen_ab0.txt
+# mixed_room.rays: 400 rays from random points inside the mixed room, half in
+# random directions and half aimed at its spheres, cylinders, rings and cone
+# (kept as data; made once with Python's random.Random(7)). -dt 0 as below,
+# and -ss 0: rough metal samples its specular lobe at random.
+rtrace -h -ab 0 -dt 0 -ss 0 -ovlpnNm mixed_frozen.oct < mixed_room.rays > mixed_frozen_ab0.txt
 # -dt 0: with two sources, -dt's estimates depend on the shadow statistics of
 # earlier rays, which Radiance's obstructor cache changes (README, Differences).
 rtrace -h -ab 0 -dt 0 -ovlpnNm cornell_plus_lamp.oct < $scenes/cornell/cam32.rays \
