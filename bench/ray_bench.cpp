@@ -132,8 +132,20 @@ void BM_RayCore_ShadowRays_Cornell(benchmark::State& state) {
 BENCHMARK(BM_RayCore_ShadowRays_Cornell);
 
 // The cornell polygons as one Embree triangle mesh (fans: its polygons are
-// convex), single precision, closest hit with rtcIntersect1.
-void BM_RawEmbree_Cornell(benchmark::State& state) {
+// convex), single precision, nothing else: the raw baselines' scene.
+struct RawCornell {
+    RTCDevice device = nullptr;
+    RTCScene rtc = nullptr;
+    RawCornell();
+    ~RawCornell() {
+        rtcReleaseScene(rtc);
+        rtcReleaseDevice(device);
+    }
+    RawCornell(const RawCornell&) = delete;
+    RawCornell& operator=(const RawCornell&) = delete;
+};
+
+RawCornell::RawCornell() {
     const rt::Scene& scene = Cornell();
     std::vector<float> vertices;
     std::vector<unsigned> triangles;
@@ -152,8 +164,8 @@ void BM_RawEmbree_Cornell(benchmark::State& state) {
                                                base + static_cast<unsigned>(k)});
         }
     }
-    RTCDevice device = rtcNewDevice(nullptr);
-    RTCScene rtc = rtcNewScene(device);
+    device = rtcNewDevice(nullptr);
+    rtc = rtcNewScene(device);
     RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
         mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size() / 3));
@@ -165,8 +177,12 @@ void BM_RawEmbree_Cornell(benchmark::State& state) {
     rtcAttachGeometry(rtc, mesh);
     rtcReleaseGeometry(mesh);
     rtcCommitScene(rtc);
+}
 
-    const std::vector<Ray> rays = RandomRays(scene, kRays);
+// Closest hit with rtcIntersect1 on random rays.
+void BM_RawEmbree_Cornell(benchmark::State& state) {
+    const RawCornell raw;
+    const std::vector<Ray> rays = RandomRays(Cornell(), kRays);
     std::size_t i = 0, hits = 0;
     RTCIntersectContext context;
     for (auto _ : state) {
@@ -183,13 +199,11 @@ void BM_RawEmbree_Cornell(benchmark::State& state) {
         rh.ray.mask = 0xffffffffu;
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcInitIntersectContext(&context);
-        rtcIntersect1(rtc, &context, &rh);
+        rtcIntersect1(raw.rtc, &context, &rh);
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++hits;
     }
     state.SetItemsProcessed(state.iterations());
     state.counters["hit%"] = 100.0 * static_cast<double>(hits) / static_cast<double>(state.iterations());
-    rtcReleaseScene(rtc);
-    rtcReleaseDevice(device);
 }
 BENCHMARK(BM_RawEmbree_Cornell);
 
@@ -239,16 +253,84 @@ void BM_FullShading_Cornell_ab0(benchmark::State& state) {
 BENCHMARK(BM_FullShading_Cornell_ab0);
 
 // -I -ab 2 -aa 0 -ad 64 -as 0: irradiance at the floor points, no cache.
-void BM_FullShading_Cornell_I_ab2_nocache(benchmark::State& state) {
+rt::ShadingOptions NoCacheShading() {
     rt::ShadingOptions shading;
     shading.irradiance = rt::IrradianceMode::Immediate;
+    return shading;
+}
+rt::AmbientOptions NoCacheAmbient() {
     rt::AmbientOptions ambient;
     ambient.bounces = 2;
     ambient.accuracy = 0;
     ambient.divisions = 64;
     ambient.superSamples = 0;
-    FullShading(state, "/scenes/cornell/floor.pts", shading, ambient);
+    return ambient;
+}
+const char* const kFloorPoints = "/scenes/cornell/floor.pts";
+
+void BM_FullShading_Cornell_I_ab2_nocache(benchmark::State& state) {
+    FullShading(state, kFloorPoints, NoCacheShading(), NoCacheAmbient());
 }
 BENCHMARK(BM_FullShading_Cornell_I_ab2_nocache);
+
+// Raw Embree on the same rays as BM_FullShading_Cornell_I_ab2_nocache: every
+// closest-hit and occlusion query that run makes (all 84 floor points once,
+// logged by RayCore::SetQueryLog), replayed in order on RawCornell with
+// rtcIntersect1 / rtcOccluded1 and the queries' own tmax. Unlike random rays
+// from anywhere in the box, these start on surfaces, and half of them are
+// shadow rays, cheaper for Embree; lazyrad answers some shadow rays without
+// Embree (raycore/hull.h, source_plane.h), which raw Embree still traces.
+void BM_RawEmbree_Cornell_SameRays(benchmark::State& state) {
+    const rt::Scene& scene = Cornell();
+    std::vector<rt::RayCore::LoggedQuery> log;
+    {
+        rt::RayCore core(scene);
+        rt::Renderer renderer(scene, core, NoCacheShading(), NoCacheAmbient(),
+                              [](const std::string&) {});
+        core.SetQueryLog(&log);
+        const std::vector<Ray> points = ReadRays(std::string(RT_SOURCE_DIR) + kFloorPoints);
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            renderer.TraceInput(points[k].org, points[k].dir, 0, k);
+        }
+        core.SetQueryLog(nullptr);
+    }
+    if (log.empty()) {
+        state.SkipWithError("no queries logged");
+        return;
+    }
+    const RawCornell raw;
+    std::size_t i = 0, answered = 0, occlusions = 0;
+    RTCIntersectContext context;
+    for (auto _ : state) {
+        const rt::RayCore::LoggedQuery& q = log[i++ % log.size()];
+        RTCRayHit rh{};
+        rh.ray.org_x = static_cast<float>(q.org.x);
+        rh.ray.org_y = static_cast<float>(q.org.y);
+        rh.ray.org_z = static_cast<float>(q.org.z);
+        rh.ray.dir_x = static_cast<float>(q.dir.x);
+        rh.ray.dir_y = static_cast<float>(q.dir.y);
+        rh.ray.dir_z = static_cast<float>(q.dir.z);
+        rh.ray.tnear = 1e-6f;
+        rh.ray.tfar = q.tmax > 0 ? static_cast<float>(q.tmax) : 1e30f;
+        rh.ray.mask = 0xffffffffu;
+        rtcInitIntersectContext(&context);
+        if (q.occlusion) {
+            ++occlusions;
+            rtcOccluded1(raw.rtc, &context, &rh.ray);
+            if (rh.ray.tfar < 0) ++answered;  // -inf: occluded
+        } else {
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(raw.rtc, &context, &rh);
+            if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++answered;
+        }
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["queries logged"] = static_cast<double>(log.size());
+    state.counters["shadow share"] =
+        static_cast<double>(occlusions) / static_cast<double>(state.iterations());
+    state.counters["hit or blocked%"] =
+        100.0 * static_cast<double>(answered) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_RawEmbree_Cornell_SameRays);
 
 }  // namespace

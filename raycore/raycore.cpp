@@ -1209,6 +1209,7 @@ double RayCore::Impl::DistanceFromAfar(const Vec3& org, const Vec3& dir) const {
 
 std::optional<Hit> RayCore::Intersect(const Vec3& orgIn, const Vec3& dir, double tmaxIn,
                                       const Vec3* leaving) const {
+    if (log_) [[unlikely]] log_->push_back({orgIn, dir, tmaxIn, false});
     // A ray from far outside the scene is first advanced, in double, to near
     // the scene: Embree's float rays lose precision with distance and must
     // stay within about 1.8e19 of the origin.
@@ -1314,6 +1315,7 @@ bool RayCore::Occluded(const Vec3& orgIn, const Vec3& dir, double tmaxIn, Occlud
                Occluded(orgIn, dir, tmaxIn, Occluders::Opaque, ignored, leaving);
     }
     if (which == Occluders::Transmitting && !impl_->transmittingLayer.rtc) return false;
+    if (log_) [[unlikely]] log_->push_back({orgIn, dir, tmaxIn, true});
     const double advance = impl_->DistanceToScene(orgIn, dir);
     if (advance < 0) return false;
     if (tmaxIn > 0 && tmaxIn <= advance) return false;

@@ -17,6 +17,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/vecmath.h"
 #include "scene/scene.h"
@@ -118,9 +119,23 @@ public:
     /// (TransmitsShadowRays); otherwise Occluders::Transmitting selects nothing.
     bool HasTransmitting() const;
 
+    /// One query as the caller asked it (Intersect: occlusion false; each
+    /// occlusion test Occluded makes: true), tmax as given (<= 0: none).
+    struct LoggedQuery {
+        Vec3 org, dir;
+        double tmax = 0;
+        bool occlusion = false;
+    };
+    /// Appends every later Intersect and occlusion query to `log` (null: stop).
+    /// For lazyrad_bench, which replays the full calculation's own rays through
+    /// raw Embree; not thread-safe, so for one thread only. Costs a query one
+    /// predictable branch when off.
+    void SetQueryLog(std::vector<LoggedQuery>* log) { log_ = log; }
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    std::vector<LoggedQuery>* log_ = nullptr;
 };
 
 }  // namespace rt
