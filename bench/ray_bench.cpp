@@ -179,6 +179,22 @@ RawCornell::RawCornell() {
     rtcCommitScene(rtc);
 }
 
+// A raw Embree ray from (org, dir), float, tnear 1e-6, tfar `tfar`, no hit yet.
+RTCRayHit RawRay(const rt::Vec3& org, const rt::Vec3& dir, float tfar) {
+    RTCRayHit rh{};
+    rh.ray.org_x = static_cast<float>(org.x);
+    rh.ray.org_y = static_cast<float>(org.y);
+    rh.ray.org_z = static_cast<float>(org.z);
+    rh.ray.dir_x = static_cast<float>(dir.x);
+    rh.ray.dir_y = static_cast<float>(dir.y);
+    rh.ray.dir_z = static_cast<float>(dir.z);
+    rh.ray.tnear = 1e-6f;
+    rh.ray.tfar = tfar;
+    rh.ray.mask = 0xffffffffu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
 // Closest hit with rtcIntersect1 on random rays.
 void BM_RawEmbree_Cornell(benchmark::State& state) {
     const RawCornell raw;
@@ -187,17 +203,7 @@ void BM_RawEmbree_Cornell(benchmark::State& state) {
     RTCIntersectContext context;
     for (auto _ : state) {
         const Ray& r = rays[i++ & (kRays - 1)];
-        RTCRayHit rh{};
-        rh.ray.org_x = static_cast<float>(r.org.x);
-        rh.ray.org_y = static_cast<float>(r.org.y);
-        rh.ray.org_z = static_cast<float>(r.org.z);
-        rh.ray.dir_x = static_cast<float>(r.dir.x);
-        rh.ray.dir_y = static_cast<float>(r.dir.y);
-        rh.ray.dir_z = static_cast<float>(r.dir.z);
-        rh.ray.tnear = 1e-6f;
-        rh.ray.tfar = 1e30f;
-        rh.ray.mask = 0xffffffffu;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        RTCRayHit rh = RawRay(r.org, r.dir, 1e30f);
         rtcInitIntersectContext(&context);
         rtcIntersect1(raw.rtc, &context, &rh);
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++hits;
@@ -309,23 +315,13 @@ void BM_RawEmbree_Cornell_SameRays(benchmark::State& state) {
     RTCIntersectContext context;
     for (auto _ : state) {
         const rt::RayCore::LoggedQuery& q = log[i++ % log.size()];
-        RTCRayHit rh{};
-        rh.ray.org_x = static_cast<float>(q.org.x);
-        rh.ray.org_y = static_cast<float>(q.org.y);
-        rh.ray.org_z = static_cast<float>(q.org.z);
-        rh.ray.dir_x = static_cast<float>(q.dir.x);
-        rh.ray.dir_y = static_cast<float>(q.dir.y);
-        rh.ray.dir_z = static_cast<float>(q.dir.z);
-        rh.ray.tnear = 1e-6f;
-        rh.ray.tfar = q.tmax > 0 ? static_cast<float>(q.tmax) : 1e30f;
-        rh.ray.mask = 0xffffffffu;
+        RTCRayHit rh = RawRay(q.org, q.dir, q.tmax > 0 ? static_cast<float>(q.tmax) : 1e30f);
         rtcInitIntersectContext(&context);
         if (q.occlusion) {
             ++occlusions;
             rtcOccluded1(raw.rtc, &context, &rh.ray);
             if (rh.ray.tfar < 0) ++answered;  // -inf: occluded
         } else {
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             rtcIntersect1(raw.rtc, &context, &rh);
             if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++answered;
         }
