@@ -30,9 +30,9 @@ job() {  # name -> "description|options|scene|points|reference or -"
     edges) echo "cornell edges, 40 points|-h -I -ab 2 $defaults|$s/cornell/cornell.rad|$s/cornell/edges.pts|$s/cornell/ref/edges_I_ab2.txt" ;;
     daylit) echo "daylit work plane, 96 points|-h -I -ab 4 $defaults|$s/daylit_room/daylit_room.rad|$s/daylit_room/workplane.pts|$s/daylit_room/ref/workplane_I_ab4.txt" ;;
     floor_fast) echo "cornell floor, fast settings|-h -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64|$s/cornell/cornell.rad|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
-    # The same job from a frozen octree (oconv -f, as honeybee's and rad's
-    # octrees are), given to both programs: its rounded reals once doubled
-    # lazyrad's records (README, "Frozen octrees").
+    # The same job from a frozen octree (oconv -f: self-contained, its reals
+    # rounded to about 31 bits), given to both programs: the rounding once
+    # made lazyrad make far more records (README, "Frozen octrees").
     floor_fast_oct) echo "cornell floor, fast settings, frozen octree|-h -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64|$root/tests/data/octree/cornell_frozen.oct|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
     mixed) echo "mixed room (curved, metal, trans, glass, 5 source kinds), 120 points|-h -I -ab 2 $defaults|$s/mixed/mixed.rad|$s/mixed/workplane.pts|-" ;;
     *) echo "side_by_side.sh: unknown job '$1'" >&2; exit 2 ;;

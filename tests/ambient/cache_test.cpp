@@ -115,7 +115,7 @@ TEST(AmbientCache, HatWeightsAsRadiance5) {
 /// A unit normal whose dot product with itself rounds above 1 (the short
 /// block's face in a frozen cornell octree had one) gave a negative chord,
 /// a NaN hat weight, and a refused record: every query on that face made its
-/// own, 1 850 records where 444 do. Both weightings must use such a record.
+/// own (README, "Frozen octrees"). Both weightings must use such a record.
 TEST(AmbientCache, NormalWithDotAboveOneIsStillAccepted) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1, 1);

@@ -205,9 +205,9 @@ TEST(GoldenOctree, FrozenMixedRoomMatchesRadianceOnTheSameOctree) {
 /// A frozen octree's reals are rounded, so a plane's unit normal can have a
 /// dot product with itself an ulp above 1; second-bounce records on such a
 /// plane were all refused (a NaN weight), and the frozen cornell octree made
-/// 3 570 records on the fast floor where the .rad file makes 2 177. Same
-/// scene, same cache: the counts must agree within a few per cent (the
-/// rounded coordinates change the samples, not how many records fit).
+/// far more records on the fast floor than its .rad file (README, "Frozen
+/// octrees"). Same scene, same cache: the counts must agree within a few per
+/// cent (the rounded coordinates change the samples, not how many records fit).
 TEST(GoldenOctree, FrozenCornellMakesAsManyRecordsAsItsRadFile) {
     const auto records = [](const std::string& command) {
         const std::string said = RunCommand(command + " 2>&1 >/dev/null");
