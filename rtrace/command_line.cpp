@@ -252,7 +252,7 @@ int ParsePhotonRadius(RtraceOptions& o, std::span<const std::string> v, const Wa
     return 1;
 }
 
-constexpr std::string_view kNoVirtual = "parsed; virtual sources not implemented";
+constexpr std::string_view kNoPretest = "parsed; no pretest is needed (README, Differences)";
 constexpr std::string_view kNoMedium = "parsed; participating media not implemented";
 
 
@@ -366,8 +366,8 @@ constexpr OptionRow kOptionRows[] = {
     Real("-dc", "direct certainty", [](RtraceOptions& o) -> double& { return o.shading.direct.certainty; }).Listed(),
     Real("-dj", "direct jitter", [](RtraceOptions& o) -> double& { return o.shading.direct.jitter; }).Listed(),
     Real("-ds", "direct sampling", [](RtraceOptions& o) -> double& { return o.shading.direct.sampling; }).Listed(),
-    Int("-dr", "direct relays", [](RtraceOptions& o) -> int& { return o.shading.direct.relays; }, kNoVirtual).Listed(),
-    Int("-dp", "direct pretest density", [](RtraceOptions& o) -> int& { return o.shading.direct.pretest; }, kNoVirtual).Listed(),
+    Int("-dr", "direct relays", [](RtraceOptions& o) -> int& { return o.shading.direct.relays; }).Listed(),
+    Int("-dp", "direct pretest density", [](RtraceOptions& o) -> int& { return o.shading.direct.pretest; }, kNoPretest).Listed(),
     Toggle("-dv", "direct (light source) visibility", [](RtraceOptions& o) -> bool& { return o.shading.direct.sourcesVisible; })
         .Listed("direct visibility on", "direct visibility off"),
     Real("-ss", "specular sampling", [](RtraceOptions& o) -> double& { return o.shading.specular.sampling; }).Listed(),

@@ -74,6 +74,18 @@ void DirectLight::CountAim(ThreadState& ts, int source, bool hit) const {
     }
 }
 
+Rgb DirectLight::RelayValue(ThreadState& ts, TracedRay& sray, int source) const {
+    // The ray must meet the relay itself; the relay (ShadeMirror) reflects it
+    // toward the source it images and follows it there, past whatever
+    // transmits and stopped by anything opaque.
+    auto hit = s_.core.IntersectSurface(s_.sources[source].relay, sray.org, sray.dir);
+    if (!hit) return Rgb();
+    sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
+    sray.rcol = Rgb();
+    tree_.Shade(ts, sray);
+    return sray.rcol;
+}
+
 Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
                              double distance) const {
     const LightSource& src = s_.sources[source];
@@ -160,7 +172,15 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         const Rgb& color = std::get<LightParams>(s_.scene.materials[src.material].params).color;
         Rgb value;
         double distance = s.distance;
-        if ((src.shape == LightSource::Shape::Distant || src.parallelogram) && !src.patterned) {
+        if (src.IsVirtual()) {
+            // An image in a mirror: its light comes through the relay (srcvalue()).
+            TracedRay sray;
+            tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);
+            sray.dir = s.dir;
+            sray.rsrc = s.source;
+            value = RelayValue(ts, sray, s.source) * coefficient;
+        } else if ((src.shape == LightSource::Shape::Distant || src.parallelogram) &&
+                   !src.patterned) {
             // The sample lands on the source: its radiance is the material's
             // colour from the front (spot cones and proximity were checked
             // when sampling), black from behind.
@@ -223,7 +243,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         SourceTally& tally = ts.sourceTallies[c.source];
         tally.ntests++;
         ++ts.stats.shadowRays;
-        if (s_.queryShadows && !ts.traceShadows) {
+        if (s_.queryShadows && !ts.traceShadows && !src.IsVirtual()) {
             // Stop just short of the sample point on the source itself.
             const double reach =
                 src.shape == LightSource::Shape::Distant
@@ -258,7 +278,8 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         // black, transparent ones transmit); with -oT every shadow ray is
         // followed so that it can be reported, as Radiance's SFOLLOW flag does.
         if (auto hit = s_.core.Intersect(sray.org, sray.dir, 0.0, sray.Leaving());
-            hit && (hit->instance >= 0 || hit->surface != src.surface || ts.traceShadows)) {
+            hit && (src.IsVirtual() || hit->instance >= 0 || hit->surface != src.surface ||
+                    ts.traceShadows)) {
             sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
             // Shaded past the surface in between (Radiance's raycont()).
             sray.rcol = Rgb();

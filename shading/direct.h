@@ -34,6 +34,9 @@ private:
     /// Radiance's srcvalue(): radiance arriving along a source ray aimed at
     /// `source`, whose sample point lies `distance` away.
     Rgb SourceValue(ThreadState& ts, TracedRay& sray, int source, double distance) const;
+    /// srcvalue() for a virtual `source`: radiance arriving along `sray`
+    /// through the mirror that relays it (black if the ray misses the mirror).
+    Rgb RelayValue(ThreadState& ts, TracedRay& sray, int source) const;
 
     const ShadingSetup& s_;
     const RayTree& tree_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "shading/light_sources.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,10 @@ namespace {
 // Partitions are addressed in units where the whole source spans
 // [-kMaxParts, kMaxParts] along each size vector (Radiance's MAXSPART).
 constexpr int kMaxParts = 64;
+
+/// A cylinder source's samples lie this many radii off its axis (Radiance's
+/// cylinder set-up).
+constexpr double kCylinderSampleRadius = 0.8559;
 
 using Partition = SourcePartition;
 
@@ -114,7 +119,7 @@ void SetUpCylinder(LightSource& src, const Surface& s, const WarningSink& warn,
     src.radius = 0.5 * length;
     src.area = 2.0 * cyl.r0 * length;
     src.size[0] = axis * (0.5 * length);
-    src.size[2] = PerpendicularTo(axis, randomFrames, rng) * (0.8559 * cyl.r0);
+    src.size[2] = PerpendicularTo(axis, randomFrames, rng) * (kCylinderSampleRadius * cyl.r0);
     src.size[1] = Cross(src.size[2], axis);
 }
 
@@ -281,6 +286,167 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
     return sources;
 }
 
+namespace {
+
+/// A mirror's plane: unit normal n and offset od, Dot(n, p) == od on it.
+struct MirrorPlane {
+    Vec3 n;
+    double od = 0;
+    Vec3 Point(const Vec3& p) const { return p - n * (2.0 * (Dot(n, p) - od)); }
+    Vec3 Vector(const Vec3& v) const { return v - n * (2.0 * Dot(n, v)); }
+};
+
+/// A relay surface: its plane and Radiance's bounding disc (fgetmaxdisk,
+/// rgetmaxdisk: a polygon's vertex mean moved into its plane, and the
+/// largest squared distance from it to a vertex; a ring's centre and outer
+/// radius).
+struct Relay {
+    int surface = -1;
+    MirrorPlane plane;
+    Vec3 centre;
+    double radius2 = 0;
+};
+
+bool MakeRelay(const Surface& s, int index, Relay& out) {
+    out.surface = index;
+    if (s.type == SurfaceType::Polygon) {
+        const auto& poly = std::get<Polygon>(s.shape);
+        out.plane = {poly.normal, poly.offset};
+        Vec3 c;
+        for (const Vec3& v : poly.vertices) c += v;
+        c = c / static_cast<double>(poly.vertices.size());
+        out.centre = c + poly.normal * (poly.offset - Dot(c, poly.normal));
+        for (const Vec3& v : poly.vertices) {
+            out.radius2 = std::fmax(out.radius2, LengthSquared(v - out.centre));
+        }
+        return poly.area > 0;
+    }
+    if (s.type == SurfaceType::Ring) {
+        const auto& ring = std::get<Ring>(s.shape);
+        out.plane = {ring.normal, Dot(ring.normal, ring.center)};
+        out.centre = ring.center;
+        out.radius2 = ring.r1 * ring.r1;
+        return true;
+    }
+    return false;
+}
+
+/// Radiance's mirrorproj() and makevsrc(): the image of `src` in `relay`,
+/// or false when there is none.
+bool MakeImage(const LightSource& src, int sn, const Relay& relay, LightSource& image) {
+    const MirrorPlane& m = relay.plane;
+    const bool distant = src.shape == LightSource::Shape::Distant;
+    // mirrorproj(): the source must lie in front of the mirror.
+    if (distant ? Dot(src.location, m.n) <= kFtiny
+                : Dot(src.location, m.n) <= m.od + kFtiny) {
+        return false;
+    }
+    if (relay.radius2 <= kFtiny) return false;  // too small
+    image = src;
+    image.relay = relay.surface;
+    image.next = sn;
+    image.surface = relay.surface;
+    // A spotlight's image is a spotlight aimed at the mirrored direction,
+    // its focal distance counted from the image.
+    image.spotAim = m.Vector(src.spotAim);
+    image.normal = m.Vector(src.normal);
+    for (Vec3& v : image.size) v = m.Vector(v);
+    if (distant) {
+        image.location = Normalize(m.Vector(src.location));
+        image.relayCentre = relay.centre;
+        image.relayRadius2 = relay.radius2;
+        return true;
+    }
+    image.location = m.Point(src.location);
+    const Vec3 toRelay = relay.centre - image.location;
+    if (src.proximity && LengthSquared(toRelay) > src.proximityRadius * src.proximityRadius) {
+        return false;  // the relay lies beyond the glow's reach
+    }
+    const double d = Length(toRelay);
+    if (d == 0) return false;
+    image.relayAim = toRelay / d;
+    // Every ray from a point of the image through the relay's disc: the cone
+    // around a ball of the disc's radius plus the image's own extent, all
+    // directions when the image's centre lies inside it. It only spares the
+    // exact test of the relay (RelayValue), which decides.
+    double extent = src.radius;
+    if (src.shape == LightSource::Shape::Cylinder) {
+        extent += Length(src.size[2]) / kCylinderSampleRadius;
+    }
+    const double reach = std::sqrt(relay.radius2) + extent;
+    const double sine2 = reach * reach / (d * d);
+    image.relayCone = sine2 >= 1.0 ? 4.0 * kPi : 2.0 * kPi * (1.0 - std::sqrt(1.0 - sine2));
+    if (src.shape == LightSource::Shape::Flat) {
+        // checkspot(): the relay's disc must reach in front of the image.
+        const double c = Dot(image.relayAim, image.normal);
+        const double c1 = 1.0 - image.relayCone / (2.0 * kPi);
+        if (!(c > kFtiny || 1.0 - kFtiny - c * c < c1 * c1)) return false;
+    }
+    return true;
+}
+
+/// At most this many images in all, and this many reflections deep: facing
+/// mirrors make images without end (a mirrored box at -dr 10 would make
+/// millions), and each is sampled at every shading point.
+constexpr std::size_t kMaxImages = 10000;
+constexpr int kMaxRelays = 100;
+
+/// Radiance's addvirtuals() and vproject(): images of source `sn` in every
+/// relay but its own, and theirs, `depth` reflections deep. False when
+/// `limit` stopped it.
+bool AddImages(const std::vector<Relay>& relays, int sn, int depth, std::size_t limit,
+               std::vector<LightSource>& sources) {
+    if (depth <= 0 || sources[sn].skip) return true;
+    for (const Relay& relay : relays) {
+        if (relay.surface == sources[sn].surface) continue;  // cannot image itself
+        LightSource image;
+        if (!MakeImage(sources[sn], sn, relay, image)) continue;
+        if (sources.size() >= limit) return false;
+        sources.push_back(image);
+        const int made = static_cast<int>(sources.size()) - 1;
+        if (!AddImages(relays, made, depth - 1, limit, sources)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
+                       std::vector<LightSource>& sources) {
+    if (relays <= 0) return;
+    std::vector<Relay> mirrors;
+    for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
+        const Surface& s = scene.surfaces[i];
+        if (s.material < 0 || scene.materials[s.material].type != MaterialType::Mirror) continue;
+        Relay relay;
+        if (MakeRelay(s, i, relay)) {
+            mirrors.push_back(relay);
+        } else if (s.type != SurfaceType::Polygon && warn) {
+            warn(s.loc.ToString() + ": secondary sources not supported for " +
+                 SurfaceTypeName(s.type) + " \"" + s.name + "\"");
+        }
+    }
+    if (mirrors.empty()) return;
+    // The deepest relay count up to -dr whose images all fit, so that the
+    // answer is that of a smaller -dr rather than of an arbitrary cut.
+    const std::size_t real = sources.size();
+    for (int depth = std::min(relays, kMaxRelays); depth > 0; --depth) {
+        bool fits = true;
+        for (int sn = static_cast<int>(real) - 1; sn >= 0 && fits; --sn) {
+            fits = AddImages(mirrors, sn, depth, real + kMaxImages, sources);
+        }
+        if (fits) {
+            if (depth < relays && warn) {
+                warn("-dr " + std::to_string(relays) + " makes more than " +
+                     std::to_string(kMaxImages) + " virtual sources; using -dr " +
+                     std::to_string(depth));
+            }
+            return;
+        }
+        sources.resize(real);
+    }
+}
+
 void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& point,
                           double rayWeight, const DirectOptions& options, Rng& rng,
                           std::vector<SourceSample>& out, std::vector<SourcePartition>& parts) {
@@ -347,6 +513,12 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
             sample.source = sn;
             sample.dir = dir;
             if (distant) {
+                if (src.IsVirtual()) {
+                    // Only rays passing within the relay's disc (spotout()).
+                    const Vec3 toRelay = src.relayCentre - point;
+                    const double along = Dot(dir, toRelay);
+                    if (LengthSquared(toRelay) - along * along > src.relayRadius2) continue;
+                }
                 sample.omega = omega * src.area;
                 sample.distance = kFhuge;
             } else {
@@ -354,6 +526,7 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
                 sample.omega = omega * src.area / (d * d);
                 sample.distance = d;
                 if (src.proximity && d > src.proximityRadius) continue;
+                if (src.IsVirtual() && OutsideSpot(src.relayCone, src.relayAim, dir)) continue;
                 if (src.spot) {
                     if (OutsideSpot(src.spotSolidAngle, src.spotAim, dir)) continue;
                     double df = d + src.spotFocal;

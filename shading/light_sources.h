@@ -37,6 +37,21 @@ struct LightSource {
     double spotFocal = 0;      // focal length behind the source centre
     bool parallelogram = false;  // flat quad whose samples always land on it
     bool patterned = false;      // its radiance comes through patterns, per sample ray
+
+    // Virtual sources (-dr, Radiance's SVIRTUAL): the image of source `next`
+    // in the planar mirror `relay`. Its geometry above is the mirrored
+    // geometry of `next`; its light reaches a point only along rays through
+    // the relay surface, which reflects them toward `next`. For a local image
+    // those rays leave it within the cone `relayCone` (sr) around `relayAim`
+    // (unit, from the image toward the relay's bounding disc); for a distant
+    // image they pass within √relayRadius2 of `relayCentre`.
+    int relay = -1;              // surface index of the mirror; -1 for a real source
+    int next = -1;               // the source this one images (Radiance's sa.sv.sn)
+    Vec3 relayAim;
+    double relayCone = 0;
+    Vec3 relayCentre;
+    double relayRadius2 = 0;
+    bool IsVirtual() const { return relay >= 0; }
 };
 
 /// One sample direction toward a light source (one per source partition).
@@ -54,6 +69,21 @@ struct SourceSample {
 /// (-u+) orients the sampling frames of non-quad flat sources randomly.
 std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink& warn,
                                           bool randomFrames, Rng& rng);
+
+/// Radiance's markvirtuals() for -dr `relays` > 0: appends the images of
+/// `sources` in every top-level planar mirror (polygon or ring), and their
+/// images in turn up to `relays` reflections deep, depth first from the last
+/// source as Radiance orders them. A mirror never images the source it
+/// relays itself; a source behind a mirror's plane, a relay disc behind a
+/// flat source's image, or outside a glow's reach makes no image. Warns
+/// "secondary sources not supported" for mirrors of any other shape. Makes at
+/// most 10 000 images: when -dr would make more, it goes as many reflections
+/// deep as fit (at most 100), with a warning.
+/// Images of spotlights are not made (README, Differences). Radiance's
+/// visibility pretest (-dp) is not needed: an image whose relay cannot see
+/// its source contributes nothing, as there.
+void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
+                       std::vector<LightSource>& sources);
 
 /// Radiance's nextssamp() + srcray() over all sources: the samples seen from
 /// `point` by a ray of weight `rayWeight`, in source order then partition order.

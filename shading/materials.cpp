@@ -308,9 +308,10 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     const bool aimedElsewhere =
         ray.rsrc >= 0 && (ray.instance >= 0 || setup.sources[ray.rsrc].surface != ray.surface);
     if (aimedElsewhere) {
-        const Material& aimed = setup.scene.materials[setup.sources[ray.rsrc].material];
-        bool illumBlocks = ray.rod > 0.0 && (aimed.type == MaterialType::Illum ||
-                                             aimed.type == MaterialType::Glow);
+        const LightSource& aimedSource = setup.sources[ray.rsrc];
+        const Material& aimed = setup.scene.materials[aimedSource.material];
+        bool illumBlocks = ray.rod > 0.0 && !aimedSource.IsVirtual() &&
+                           (aimed.type == MaterialType::Illum || aimed.type == MaterialType::Glow);
         if (m.type != MaterialType::Illum || illumBlocks) return;  // wrong source
     }
     if (m.type == MaterialType::Illum && (ray.rsrc < 0 || aimedElsewhere)) {
@@ -338,11 +339,26 @@ void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         if (!setup.shading.backfaceVisible) tree.PassThrough(ts, ray);
         return;  // black from behind
     }
+    if (ray.rsrc >= 0 && ray.instance < 0 && setup.sources[ray.rsrc].relay == ray.surface) {
+        // A shadow ray aimed at this mirror's image of a source: reflected
+        // (about the plain normal, as Radiance ignores textures here) toward
+        // the source imaged, and traced there whatever the ray limits.
+        Rgb coef = std::get<MirrorParams>(m.params).color * ray.pcol;
+        TracedRay child;
+        tree.StartChild(ts, child, ray, kReflectedRay, &coef);
+        child.dir = Normalize(ray.dir + ray.ron * (2.0 * ray.rod));
+        child.rsrc = setup.sources[ray.rsrc].next;
+        tree.Trace(ts, child);
+        const Rgb c = child.rcol * child.rcoef;
+        ray.rcol += c;
+        ray.mcol = c;
+        return;
+    }
     if (m.alternate >= 0 && !((ray.crtype & (kAmbientRay | kSpecularRay)) && ray.rod > 0.0)) {
         tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
         return;
     }
-    if (ray.crtype & kShadowRay) return;  // no virtual sources: mirrors block shadow rays
+    if (ray.crtype & kShadowRay) return;  // aimed at another source: blocked
     Rgb coef = std::get<MirrorParams>(m.params).color * ray.pcol;
     TracedRay child;
     if (!tree.StartChild(ts, child, ray, kReflectedRay, &coef)) return;

@@ -63,7 +63,8 @@ bool RayTree::HitDistantSource(TracedRay& ray) const {
     int found = -1;
     for (int i = 0; i < static_cast<int>(s_.sources.size()); ++i) {
         const LightSource& src = s_.sources[i];
-        if (src.shape != LightSource::Shape::Distant) continue;
+        // A distant image in a mirror is reached only through the mirror.
+        if (src.shape != LightSource::Shape::Distant || src.IsVirtual()) continue;
         if (ray.rsrc >= 0 && ray.rsrc != i) continue;  // an aimed ray tests its own source only
         if (2.0 * kPi * (1.0 - Dot(src.location, ray.dir)) > src.area) continue;
         const Material& m = s_.scene.materials[src.material];

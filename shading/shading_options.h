@@ -13,8 +13,8 @@ struct DirectOptions {
     double certainty = 0.75;    // -dc
     double jitter = 0.0;        // -dj
     double sampling = 0.2;      // -ds (source subdivision ratio; 0 = one sample per source)
-    int relays = 2;             // -dr (virtual sources; parsed, not yet used)
-    int pretest = 512;          // -dp (parsed, not yet used)
+    int relays = 2;             // -dr: reflections of light sources in planar mirrors
+    int pretest = 512;          // -dp (parsed; lazyrad needs no visibility pretest)
     bool sourcesVisible = true; // -dv
 };
 

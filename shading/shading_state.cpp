@@ -47,6 +47,7 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
     };
     Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
     sources = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
+    AddVirtualSources(scene, shading.direct.relays, sourceWarn, sources);
 
     ambientList.insert(ambient.modifierList.begin(), ambient.modifierList.end());
 
