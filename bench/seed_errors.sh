@@ -3,7 +3,7 @@
 # builds on the same seeds (one seed is one draw of the Monte Carlo error).
 #
 #   bench/seed_errors.sh RTRACE JOB "SEEDS" [EXTRA OPTIONS...]
-#     JOB  floor edges fast daylit df dense dense_tool
+#     JOB  floor edges fast daylit shelf df dense dense_tool
 #
 # Prints one line: the job, the mean of bench/score.py's RMS error (the raw
 # figure, reference noise included), each seed's error, the mean user CPU
@@ -21,6 +21,7 @@ case $job in
   edges) o="-I -ab 2 $defaults"; scene=$S/cornell/cornell.rad; pts=$S/cornell/edges.pts; ref=$S/cornell/ref/edges_I_ab2.txt ;;
   fast) o="-I -ab 2 -ad 256 -as 128 -aa .2 -ar 64"; scene=$S/cornell/cornell.rad; pts=$S/cornell/floor.pts; ref=$S/cornell/ref/floor_I_ab2.txt ;;
   daylit) o="-I -ab 4 $defaults"; scene=$S/daylit_room/daylit_room.rad; pts=$S/daylit_room/workplane.pts; ref=$S/daylit_room/ref/workplane_I_ab4.txt ;;
+  shelf) o="-I -ab 4 $defaults"; scene=$S/shelf_room/shelf_room.rad; pts=$S/daylit_room/workplane.pts; ref=$S/shelf_room/ref/workplane_I_ab4.txt ;;
   df) o="-I -ab 2 -aa .1 -ad 2048 -ar 64"; scene=$S/df_room/df_room.oct; pts=$S/df_room/grid.pts; ref=$S/df_room/ref/grid_I_ab2.txt ;;
   dense) o="-I -ab 2 $defaults"; scene=$S/cornell/cornell.rad; pts=$S/cornell/floor_dense.pts; ref=$S/cornell/ref/floor_dense_I_ab2.txt ;;
   dense_tool) o="-I -ab 2 -aa .1 -ad 2048 -ar 64"; scene=$S/cornell/cornell.rad; pts=$S/cornell/floor_dense.pts; ref=$S/cornell/ref/floor_dense_I_ab2.txt ;;

@@ -7,7 +7,7 @@
 # section of docs/benchmarks.md, naming the machine and the date.
 #
 #   bench/side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]
-#     JOBS  subset of: floor edges daylit floor_fast mixed floor_fast_oct
+#     JOBS  subset of: floor edges daylit floor_fast mixed floor_fast_oct shelf
 #           (default all)
 #
 # Every speed-up is a ratio measured in this run; the absolute times are only
@@ -19,7 +19,7 @@ write=0 pairs=3
 while getopts "wn:" o; do case $o in w) write=1 ;; n) pairs=$OPTARG ;; *) exit 2 ;; esac; done
 shift $((OPTIND - 1))
 lz=$(realpath "${1:?usage: side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]}")
-jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct}
+jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct shelf}
 sbs=$root/../shared/tools/side-by-side
 [ -x "$sbs" ] || { echo "side_by_side.sh: $sbs not found (needs ../shared)" >&2; exit 2; }
 defaults="-ad 1024 -as 512 -aa .1 -ar 256"
@@ -34,6 +34,9 @@ job() {  # name -> "description|options|scene|points|reference or -"
     # rounded to about 31 bits), given to both programs: the rounding once
     # made lazyrad make far more records (README, "Frozen octrees").
     floor_fast_oct) echo "cornell floor, fast settings, frozen octree|-h -I -ab 2 -ad 256 -as 128 -aa .2 -ar 64|$root/tests/data/octree/cornell_frozen.oct|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
+    # The daylit room with a mirrored light shelf: the sun also comes in
+    # through a virtual source (-dr), in both programs.
+    shelf) echo "daylit room with a mirror light shelf, 96 points|-h -I -ab 4 $defaults|$s/shelf_room/shelf_room.rad|$s/daylit_room/workplane.pts|$s/shelf_room/ref/workplane_I_ab4.txt" ;;
     mixed) echo "mixed room (curved, metal, trans, glass, 5 source kinds), 120 points|-h -I -ab 2 $defaults|$s/mixed/mixed.rad|$s/mixed/workplane.pts|-" ;;
     *) echo "side_by_side.sh: unknown job '$1'" >&2; exit 2 ;;
   esac
