@@ -272,6 +272,12 @@ TEST(GoldenVirtual, PenumbraeSpotlightsGlowsAndIllumsMatchRadiance) {
     CompareVirtual("glow_illum", "-I -dr 2", "room.pts", "glow_illum_dr2.txt");
 }
 
+/// A mirror's texture does not bend the light it relays; its pattern
+/// colours it.
+TEST(GoldenVirtual, TexturedAndPatternedMirrorsMatchRadiance) {
+    CompareVirtual("textured", "-I -dr 2", "room.pts", "textured_dr2.txt");
+}
+
 /// Images of images in a closed mirrored box, four reflections deep. Within
 /// 1e-6 relative rather than 2 units of the 7th digit: Radiance adds a
 /// point's dozens of source contributions in single precision.

@@ -27,3 +27,4 @@ run penumbra_ds02.txt penumbra -I -ds .02 < line.pts
 run uplight_ds02.txt uplight -I -ds .02 < grid.pts
 run glow_illum_dr2.txt glow_illum -I -dr 2 < room.pts
 run mirror_box_dr4.txt mirror_box -I -dr 4 < room.pts
+run textured_dr2.txt textured -I -dr 2 < room.pts
