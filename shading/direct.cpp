@@ -81,6 +81,7 @@ Rgb DirectLight::RelayValue(ThreadState& ts, TracedRay& sray, int source) const 
     auto hit = s_.core.IntersectSurface(s_.sources[source].relay, sray.org, sray.dir);
     if (!hit) return Rgb();
     sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
+    sray.rot = hit->t;
     sray.rcol = Rgb();
     tree_.Shade(ts, sray);
     return sray.rcol;
@@ -179,6 +180,11 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             sray.dir = s.dir;
             sray.rsrc = s.source;
             value = RelayValue(ts, sray, s.source) * coefficient;
+            // The shadow test below asks only about the way to the relay:
+            // the way on from it is in the value already (Radiance's
+            // virtual sources without SFOLLOW, which its pretest clears
+            // when nothing obstructs the relay's view of its source).
+            distance = sray.rot;
         } else if ((src.shape == LightSource::Shape::Distant || src.parallelogram) &&
                    !src.patterned) {
             // The sample lands on the source: its radiance is the material's
@@ -243,10 +249,11 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         SourceTally& tally = ts.sourceTallies[c.source];
         tally.ntests++;
         ++ts.stats.shadowRays;
-        if (s_.queryShadows && !ts.traceShadows && !src.IsVirtual()) {
-            // Stop just short of the sample point on the source itself.
+        if (s_.queryShadows && !ts.traceShadows) {
+            // Stop just short of the sample point on the source itself (for
+            // an image: of the relay).
             const double reach =
-                src.shape == LightSource::Shape::Distant
+                src.shape == LightSource::Shape::Distant && !src.IsVirtual()
                     ? 0.0
                     : c.distance - std::max(s_.scene.distanceTolerance, 1e-7 * c.distance);
             // Transmitting surfaces are asked about first: a shadow ray that
