@@ -78,10 +78,10 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
 /// flat source's image, or outside a glow's reach makes no image. Warns
 /// "secondary sources not supported" for mirrors of any other shape. Makes at
 /// most 10 000 images: when -dr would make more, it goes as many reflections
-/// deep as fit (at most 100), with a warning.
-/// Images of spotlights are not made (README, Differences). Radiance's
-/// visibility pretest (-dp) is not needed: an image whose relay cannot see
-/// its source contributes nothing, as there.
+/// deep as fit (at most 100), with a warning. A spotlight's image is a
+/// spotlight aimed at the mirrored direction. Radiance's visibility pretest
+/// (-dp) is not needed: an image whose relay cannot see its source
+/// contributes nothing, as there.
 void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
                        std::vector<LightSource>& sources);
 
