@@ -244,38 +244,33 @@ void CompareVirtual(const std::string& scene, const std::string& options,
                   kVirtual + "/" + ref);
 }
 
-/// A lamp facing up under a mirror ceiling lights the floor only through
-/// the mirror; with -dr 0 the floor is dark, as in Radiance.
-TEST(GoldenVirtual, LampUnderMirrorCeilingMatchesRadiance) {
-    CompareVirtual("lamp_ceiling", "-I -dr 2", "room.pts", "lamp_ceiling_dr2.txt");
-    CompareVirtual("lamp_ceiling", "-I -dr 0", "room.pts", "lamp_ceiling_dr0.txt");
-}
-
-/// The sun off a light shelf, at sensors and seen by camera rays.
-TEST(GoldenVirtual, SunOffLightShelfMatchesRadiance) {
-    CompareVirtual("shelf", "-I -dr 2", "room.pts", "shelf_dr2.txt");
-    CompareVirtual("shelf", "-ovlpnNm -dr 2", "shelf_camera.rays", "shelf_camera_dr2.txt");
-}
-
-/// Images of images between facing mirrors (a ring and a polygon), one
-/// mirror patterned, at one and three relays.
-TEST(GoldenVirtual, ImagesOfImagesMatchRadiance) {
-    CompareVirtual("relays", "-I -dr 1", "room.pts", "relays_dr1.txt");
-    CompareVirtual("relays", "-I -dr 3", "room.pts", "relays_dr3.txt");
-}
-
-/// Penumbrae through mirrors smaller than the lamp, finely partitioned; a
-/// tilted spotlight's cone through a mirror; a glow's reach and an illum.
-TEST(GoldenVirtual, PenumbraeSpotlightsGlowsAndIllumsMatchRadiance) {
-    CompareVirtual("penumbra", "-I -ds .02", "line.pts", "penumbra_ds02.txt");
-    CompareVirtual("uplight", "-I -ds .02", "grid.pts", "uplight_ds02.txt");
-    CompareVirtual("glow_illum", "-I -dr 2", "room.pts", "glow_illum_dr2.txt");
-}
-
-/// A mirror's texture does not bend the light it relays; its pattern
-/// colours it.
-TEST(GoldenVirtual, TexturedAndPatternedMirrorsMatchRadiance) {
-    CompareVirtual("textured", "-I -dr 2", "room.pts", "textured_dr2.txt");
+/// One row per case: scene, options, rays, Radiance's output.
+TEST(GoldenVirtual, ScenesMatchRadiance) {
+    const struct {
+        const char *scene, *options, *rays, *ref;
+    } cases[] = {
+        // A lamp facing up under a mirror ceiling lights the floor only
+        // through the mirror; with -dr 0 the floor is dark, as in Radiance.
+        {"lamp_ceiling", "-I -dr 2", "room.pts", "lamp_ceiling_dr2.txt"},
+        {"lamp_ceiling", "-I -dr 0", "room.pts", "lamp_ceiling_dr0.txt"},
+        // The sun off a light shelf, at sensors and seen by camera rays.
+        {"shelf", "-I -dr 2", "room.pts", "shelf_dr2.txt"},
+        {"shelf", "-ovlpnNm -dr 2", "shelf_camera.rays", "shelf_camera_dr2.txt"},
+        // Images of images between facing mirrors (a ring and a polygon),
+        // one mirror patterned, at one and three relays.
+        {"relays", "-I -dr 1", "room.pts", "relays_dr1.txt"},
+        {"relays", "-I -dr 3", "room.pts", "relays_dr3.txt"},
+        // Penumbrae through mirrors smaller than the lamp, finely
+        // partitioned; a tilted spotlight's cone through a mirror; a glow's
+        // reach and an illum.
+        {"penumbra", "-I -ds .02", "line.pts", "penumbra_ds02.txt"},
+        {"uplight", "-I -ds .02", "grid.pts", "uplight_ds02.txt"},
+        {"glow_illum", "-I -dr 2", "room.pts", "glow_illum_dr2.txt"},
+        // A mirror's texture does not bend the light it relays; its pattern
+        // colours it.
+        {"textured", "-I -dr 2", "room.pts", "textured_dr2.txt"},
+    };
+    for (const auto& c : cases) CompareVirtual(c.scene, c.options, c.rays, c.ref);
 }
 
 /// Images of images in a closed mirrored box, four reflections deep. Within
