@@ -273,6 +273,15 @@ TEST(GoldenVirtual, ScenesMatchRadiance) {
     for (const auto& c : cases) CompareVirtual(c.scene, c.options, c.rays, c.ref);
 }
 
+/// A mirror inside an instance makes no virtual sources, in Radiance as here:
+/// the lamp-ceiling floor stays dark with the ceiling instanced.
+TEST(GoldenVirtual, MirrorsInsideInstancesRelayNothing) {
+    CompareOutput("mirror_instance -I -dr 2",
+                  "(cd " + kVirtual + " && " + kRtrace +
+                      " -h -ab 0 -dj 0 -dt 0 -I -dr 2 mirror_instance.rad < room.pts)",
+                  kVirtual + "/mirror_instance_dr2.txt");
+}
+
 /// Images of images in a closed mirrored box, four reflections deep. Within
 /// 1e-6 relative rather than 2 units of the 7th digit: Radiance adds a
 /// point's dozens of source contributions in single precision.

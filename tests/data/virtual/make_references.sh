@@ -8,9 +8,10 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 rad=${1:-$here/../../../../shared/reference/radiance-5.4a}
-export RAYPATH=$rad/lib
+export RAYPATH=$here:$rad/lib  # mirror_instance.rad finds mirror_ceiling.oct here
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cd "$here"
+"$rad/bin/oconv" mirror_ceiling.rad > mirror_ceiling.oct
 run() {  # output scene options... < input
   local out=$1 scene=$2; shift 2
   "$rad/bin/oconv" "$scene.rad" > "$tmp/$scene.oct"
@@ -28,3 +29,4 @@ run uplight_ds02.txt uplight -I -ds .02 < grid.pts
 run glow_illum_dr2.txt glow_illum -I -dr 2 < room.pts
 run mirror_box_dr4.txt mirror_box -I -dr 4 < room.pts
 run textured_dr2.txt textured -I -dr 2 < room.pts
+run mirror_instance_dr2.txt mirror_instance -I -dr 2 < room.pts
