@@ -336,7 +336,12 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
 void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
     const ShadingSetup& setup = tree.setup();
     if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible) tree.PassThrough(ts, ray);
+        // -bv- lets other rays through a mirror's back, not shadow rays:
+        // Radiance stops a shadow ray at a mirror before it looks at the side
+        // (one aimed at another source, or at this mirror's image from behind).
+        if (!setup.shading.backfaceVisible && !(ray.crtype & kShadowRay)) {
+            tree.PassThrough(ts, ray);
+        }
         return;  // black from behind
     }
     if (ray.rsrc >= 0 && ray.instance < 0 && setup.sources[ray.rsrc].relay == ray.surface) {

@@ -269,6 +269,10 @@ TEST(GoldenVirtual, ScenesMatchRadiance) {
         // A mirror's texture does not bend the light it relays; its pattern
         // colours it.
         {"textured", "-I -dr 2", "room.pts", "textured_dr2.txt"},
+        // -bv- makes a mirror's back transparent to other rays, never to
+        // shadow rays (sensors under the shelf stay in its shadow).
+        {"shelf", "-I -dr 2 -bv-", "room.pts", "shelf_bv.txt"},
+        {"relays", "-I -dr 2 -bv-", "room.pts", "relays_bv.txt"},
     };
     for (const auto& c : cases) CompareVirtual(c.scene, c.options, c.rays, c.ref);
 }

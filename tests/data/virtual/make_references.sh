@@ -30,3 +30,5 @@ run glow_illum_dr2.txt glow_illum -I -dr 2 < room.pts
 run mirror_box_dr4.txt mirror_box -I -dr 4 < room.pts
 run textured_dr2.txt textured -I -dr 2 < room.pts
 run mirror_instance_dr2.txt mirror_instance -I -dr 2 < room.pts
+run shelf_bv.txt shelf -I -dr 2 -bv- < room.pts
+run relays_bv.txt relays -I -dr 2 -bv- < room.pts
