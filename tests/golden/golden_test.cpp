@@ -266,6 +266,8 @@ TEST(GoldenVirtual, ScenesMatchRadiance) {
         {"penumbra", "-I -ds .02", "line.pts", "penumbra_ds02.txt"},
         {"uplight", "-I -ds .02", "grid.pts", "uplight_ds02.txt"},
         {"glow_illum", "-I -dr 2", "room.pts", "glow_illum_dr2.txt"},
+        // A cylinder's image, partitioned along its axis.
+        {"tube", "-I -dr 2 -ds .02", "room.pts", "tube_ds02.txt"},
         // A mirror's texture does not bend the light it relays; its pattern
         // colours it.
         {"textured", "-I -dr 2", "room.pts", "textured_dr2.txt"},
