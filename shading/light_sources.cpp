@@ -47,6 +47,13 @@ void SetFlatSize(LightSource& src, bool randomFrames, Rng& rng) {
     src.size[2] = Vec3();
 }
 
+/// The mean of a polygon's vertices (Radiance's centre of a face).
+Vec3 VertexMean(const Polygon& poly) {
+    Vec3 c;
+    for (const Vec3& v : poly.vertices) c += v;
+    return c / static_cast<double>(poly.vertices.size());
+}
+
 [[noreturn]] void SourceError(const Surface& s, const std::string& what) {
     ThrowUserError(s.loc, what + " for light source \"" + s.name + "\"");
 }
@@ -54,9 +61,7 @@ void SetFlatSize(LightSource& src, bool randomFrames, Rng& rng) {
 void SetUpPolygon(LightSource& src, const Surface& s, bool randomFrames, Rng& rng) {
     const auto& poly = std::get<Polygon>(s.shape);
     if (poly.area <= 0) SourceError(s, "zero source area");
-    Vec3 c;
-    for (const Vec3& v : poly.vertices) c += v;
-    c = c / static_cast<double>(poly.vertices.size());
+    const Vec3 c = VertexMean(poly);
     if (!PointInPolygon(poly, c)) SourceError(s, "cannot hit source center");
     src.shape = LightSource::Shape::Flat;
     src.location = c;
@@ -312,9 +317,7 @@ bool MakeRelay(const Surface& s, int index, Relay& out) {
     if (s.type == SurfaceType::Polygon) {
         const auto& poly = std::get<Polygon>(s.shape);
         out.plane = {poly.normal, poly.offset};
-        Vec3 c;
-        for (const Vec3& v : poly.vertices) c += v;
-        c = c / static_cast<double>(poly.vertices.size());
+        const Vec3 c = VertexMean(poly);
         out.centre = c + poly.normal * (poly.offset - Dot(c, poly.normal));
         for (const Vec3& v : poly.vertices) {
             out.radius2 = std::fmax(out.radius2, LengthSquared(v - out.centre));
@@ -428,22 +431,29 @@ void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
     }
     if (mirrors.empty()) return;
     // The deepest relay count up to -dr whose images all fit, so that the
-    // answer is that of a smaller -dr rather than of an arbitrary cut.
+    // answer is that of a smaller -dr rather than of an arbitrary cut. More
+    // depth never makes fewer images, so the depth is found by bisection.
     const std::size_t real = sources.size();
-    for (int depth = std::min(relays, kMaxRelays); depth > 0; --depth) {
-        bool fits = true;
-        for (int sn = static_cast<int>(real) - 1; sn >= 0 && fits; --sn) {
-            fits = AddImages(mirrors, sn, depth, real + kMaxImages, sources);
-        }
-        if (fits) {
-            if (depth < relays && warn) {
-                warn("-dr " + std::to_string(relays) + " makes more than " +
-                     std::to_string(kMaxImages) + " virtual sources; using -dr " +
-                     std::to_string(depth));
-            }
-            return;
-        }
+    const auto fits = [&](int depth) {
         sources.resize(real);
+        for (int sn = static_cast<int>(real) - 1; sn >= 0; --sn) {
+            if (!AddImages(mirrors, sn, depth, real + kMaxImages, sources)) return false;
+        }
+        return true;
+    };
+    int depth = std::min(relays, kMaxRelays);
+    if (!fits(depth)) {
+        int low = 0, high = depth;  // fits(low), not fits(high)
+        while (high - low > 1) {
+            const int mid = (low + high) / 2;
+            (fits(mid) ? low : high) = mid;
+        }
+        depth = low;
+        fits(depth);  // leave that depth's images
+    }
+    if (depth < relays && warn) {
+        warn("-dr " + std::to_string(relays) + " makes more than " + std::to_string(kMaxImages) +
+             " virtual sources; using -dr " + std::to_string(depth));
     }
 }
 

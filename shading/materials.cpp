@@ -344,33 +344,25 @@ void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         }
         return;  // black from behind
     }
-    if (ray.rsrc >= 0 && ray.instance < 0 && setup.sources[ray.rsrc].relay == ray.surface) {
-        // A shadow ray aimed at this mirror's image of a source: reflected
-        // (about the plain normal, as Radiance ignores textures here) toward
-        // the source imaged, and traced there whatever the ray limits.
-        Rgb coef = std::get<MirrorParams>(m.params).color * ray.pcol;
-        TracedRay child;
-        tree.StartChild(ts, child, ray, kReflectedRay, &coef);
-        child.dir = Normalize(ray.dir + ray.ron * (2.0 * ray.rod));
-        child.rsrc = setup.sources[ray.rsrc].next;
-        tree.Trace(ts, child);
-        const Rgb c = child.rcol * child.rcoef;
-        ray.rcol += c;
-        ray.mcol = c;
-        return;
+    // A shadow ray aimed at this mirror's image of a source is reflected
+    // (about the plain normal: Radiance ignores textures here) toward the
+    // source imaged, and traced there whatever the ray limits.
+    const bool relaying =
+        ray.rsrc >= 0 && ray.instance < 0 && setup.sources[ray.rsrc].relay == ray.surface;
+    if (!relaying) {
+        if (m.alternate >= 0 && !((ray.crtype & (kAmbientRay | kSpecularRay)) && ray.rod > 0.0)) {
+            tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
+            return;
+        }
+        if (ray.crtype & kShadowRay) return;  // aimed at another source: blocked
     }
-    if (m.alternate >= 0 && !((ray.crtype & (kAmbientRay | kSpecularRay)) && ray.rod > 0.0)) {
-        tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
-        return;
-    }
-    if (ray.crtype & kShadowRay) return;  // aimed at another source: blocked
     Rgb coef = std::get<MirrorParams>(m.params).color * ray.pcol;
     TracedRay child;
-    if (!tree.StartChild(ts, child, ray, kReflectedRay, &coef)) return;
+    if (!tree.StartChild(ts, child, ray, kReflectedRay, &coef) && !relaying) return;
     Vec3 dir = ray.dir + ray.ron * (2.0 * ray.rod);
     // Ambient rays keep the plain mirror direction (radiance-notes §2.8);
     // a perturbed one that would go through the mirror is dropped.
-    const bool textured = ray.Textured() && !(ray.crtype & kAmbientRay);
+    const bool textured = !relaying && ray.Textured() && !(ray.crtype & kAmbientRay);
     if (textured) {
         Vec3 pnorm;
         const double pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
@@ -378,10 +370,12 @@ void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         if (Dot(bent, ray.ron) > kFtiny) dir = bent;
     }
     child.dir = Normalize(dir);
+    if (relaying) child.rsrc = setup.sources[ray.rsrc].next;
     tree.Trace(ts, child);
     Rgb c = child.rcol * child.rcoef;
     ray.rcol += c;
     ray.mcol = c;
+    if (relaying) return;
     ray.rmt = ray.rot + (IsFlat(setup.scene, ray) && !textured ? child.EffectiveDistance() : 0.0);
 }
 
