@@ -406,12 +406,23 @@ struct RayCore::Impl {
         std::vector<int> conePrimitive;
         const TriangleMesh* mesh = nullptr;
         std::vector<PolygonPlane> meshPlanes;  // per triangle
+
+        /// The polygons as Embree quads, made once (MakePolygonQuads) for all
+        /// the layers built over this geometry: every polygon's vertices in
+        /// float relative to `centre` (Embree's shared vertex buffer, padded
+        /// for its 16-byte reads), every quad's vertex indices and plane, and
+        /// per surface its run of quads [quadStart[i], quadStart[i + 1]).
+        std::vector<float> polygonVertices;
+        std::vector<std::array<unsigned, 4>> polygonQuads;
+        std::vector<PolygonPlane> polygonPlanes;
+        std::vector<unsigned> quadStart;
     };
 
     /// One Embree scene over some of the surfaces.
     struct Layer {
         RTCScene rtc = nullptr;
-        /// Per quad primitive (primID); the polygon filters' geometry user data.
+        /// Per quad primitive (primID) when the layer leaves some polygons
+        /// out; the polygon filters' geometry user data (else the Geometry's).
         std::vector<PolygonPlane> quads;
         /// Box around every hit the layer can report (scene coordinates),
         /// widened by Embree's float error; empty when the layer holds nothing.
@@ -535,7 +546,9 @@ struct RayCore::Impl {
     /// the world (`instanceLeftOut` not null), every instance not left out.
     void BuildLayer(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut,
                     const std::vector<bool>* instanceLeftOut);
-    void BuildPolygons(Layer& layer, const Geometry& geometry, const std::vector<bool>& leftOut);
+    void BuildPolygons(Layer& layer, Geometry& geometry, const std::vector<bool>& leftOut);
+    /// Geometry::polygonVertices and the rest, unless made already.
+    static void MakePolygonQuads(Geometry& geometry);
     void BuildMesh(Layer& layer, Geometry& geometry);
     void BuildInstances(Layer& layer, const std::vector<bool>& leftOut);
     /// Float boxes of user-geometry surfaces, relative to the centre.
@@ -971,47 +984,76 @@ RayCore::Impl::UserKind& RayCore::Impl::ChooseUserKind(UserKind& all, UserKind& 
     return own;
 }
 
-void RayCore::Impl::BuildPolygons(Layer& layer, const Geometry& geometry,
-                                  const std::vector<bool>& leftOut) {
-    std::vector<float> vertices;
-    std::vector<unsigned> indices;
+void RayCore::Impl::MakePolygonQuads(Geometry& geometry) {
+    if (!geometry.quadStart.empty()) return;
     const auto& surfaces = *geometry.surfaces;
+    std::size_t vertexCount = 0;
+    for (const Surface& surface : surfaces) {
+        if (surface.type == SurfaceType::Polygon) {
+            vertexCount += std::get<Polygon>(surface.shape).vertices.size();
+        }
+    }
+    geometry.polygonVertices.reserve(3 * vertexCount + 1);
+    geometry.quadStart.reserve(surfaces.size() + 1);
     for (size_t i = 0; i < surfaces.size(); ++i) {
+        geometry.quadStart.push_back(static_cast<unsigned>(geometry.polygonQuads.size()));
         const Surface& surface = surfaces[i];
-        if (surface.type != SurfaceType::Polygon || leftOut[i]) continue;
+        if (surface.type != SurfaceType::Polygon) continue;
         const auto& polygon = std::get<Polygon>(surface.shape);
-        const auto base = static_cast<unsigned>(vertices.size() / 3);
+        const auto base = static_cast<unsigned>(geometry.polygonVertices.size() / 3);
         // Same double -> same float: polygons sharing a vertex share it
         // bit-exactly, which Embree's watertight test needs.
         for (const Vec3& v : polygon.vertices) {
             const Vec3 r = v - geometry.centre;
-            vertices.insert(vertices.end(), {static_cast<float>(r.x), static_cast<float>(r.y),
+            geometry.polygonVertices.insert(geometry.polygonVertices.end(),
+                                            {static_cast<float>(r.x), static_cast<float>(r.y),
                                              static_cast<float>(r.z)});
         }
         for (const auto& quad : PairTriangles(TriangulatePolygon(polygon))) {
-            for (int k : quad) indices.push_back(base + static_cast<unsigned>(k));
-            layer.quads.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
+            geometry.polygonQuads.push_back(
+                {base + static_cast<unsigned>(quad[0]), base + static_cast<unsigned>(quad[1]),
+                 base + static_cast<unsigned>(quad[2]), base + static_cast<unsigned>(quad[3])});
+            geometry.polygonPlanes.push_back({polygon.normal, polygon.offset, static_cast<int>(i)});
         }
     }
-    if (layer.quads.empty()) return;
+    geometry.quadStart.push_back(static_cast<unsigned>(geometry.polygonQuads.size()));
+    geometry.polygonVertices.push_back(0.0f);  // Embree reads 16 bytes at the last vertex
+}
+
+void RayCore::Impl::BuildPolygons(Layer& layer, Geometry& geometry,
+                                  const std::vector<bool>& leftOut) {
+    MakePolygonQuads(geometry);
+    const auto& start = geometry.quadStart;
+    std::size_t count = 0;
+    for (size_t i = 0; i + 1 < start.size(); ++i) {
+        if (!leftOut[i]) count += start[i + 1] - start[i];
+    }
+    if (count == 0) return;
+    // A layer with every polygon uses the geometry's planes; one that
+    // leaves some out numbers its quads afresh and keeps its own.
+    const bool all = count == geometry.polygonQuads.size();
+    if (!all) layer.quads.reserve(count);
 
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
     Check("rtcNewGeometry");
-    // Embree pads buffers it allocates itself (it reads 16 bytes per vertex).
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                           RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                           vertices.size() / 3));
-    auto* ib = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                4 * sizeof(unsigned), layer.quads.size()));
-    if (!vb || !ib) {
+    const std::size_t vertexCount = (geometry.polygonVertices.size() - 1) / 3;
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               geometry.polygonVertices.data(), 0, 3 * sizeof(float), vertexCount);
+    auto* ib = static_cast<std::array<unsigned, 4>*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), count));
+    if (!ib) {
         rtcReleaseGeometry(geom);
         Check("rtcSetNewGeometryBuffer");
         throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
     }
-    std::copy(vertices.begin(), vertices.end(), vb);
-    std::copy(indices.begin(), indices.end(), ib);
-    rtcSetGeometryUserData(geom, &layer.quads);
+    for (size_t i = 0; i + 1 < start.size(); ++i) {
+        if (leftOut[i]) continue;
+        for (unsigned q = start[i]; q < start[i + 1]; ++q) {
+            *ib++ = geometry.polygonQuads[q];
+            if (!all) layer.quads.push_back(geometry.polygonPlanes[q]);
+        }
+    }
+    rtcSetGeometryUserData(geom, all ? &geometry.polygonPlanes : &layer.quads);
     const bool instanced = &geometry != &world;
     rtcSetGeometryIntersectFilterFunction(
         geom, instanced ? &PolygonIntersectFilter<true> : &PolygonIntersectFilter<false>);

@@ -151,7 +151,11 @@ public:
     SceneBuilder(const WarningSink& warn, const SceneLoadOptions& options)
         : warn_(warn), options_(options) {}
 
-    void Add(const SceneObject& object) {
+    /// Room for `n` more surfaces: most objects of a large scene are.
+    void ReserveSurfaces(std::size_t n) { surfaces_->reserve(surfaces_->size() + n); }
+
+    /// A surface takes the object's strings; other objects are left as they were.
+    void Add(SceneObject& object) {
         if (object.type == "alias") {
             AddAlias(object);
         } else if (FindPatternSpec(object.type) != nullptr) {
@@ -476,7 +480,7 @@ private:
         surface.patterns = std::move(chain.modifiers);
     }
 
-    void AddSurface(const SceneObject& object) {
+    void AddSurface(SceneObject& object) {
         if (object.type == "instance" || object.type == "mesh") {
             AddPlacement(object);
             return;
@@ -485,10 +489,7 @@ private:
         if (!object.sargs.empty()) BadArgs(object);
 
         Surface surface;
-        surface.name = object.name;
-        surface.modifierName = object.modifier;
         SetModifiers(surface, modifier);
-        surface.loc = object.loc;
         bool keep = true;
         if (object.type == "polygon") {
             keep = SetPolygon(object, surface);
@@ -507,6 +508,10 @@ private:
         if (!bounds.Empty() && (!IsFinite(bounds.lo) || !IsFinite(bounds.hi))) {
             Fail(object, "coordinates too large");
         }
+        // Moved last: until here an error may name the object.
+        surface.name = std::move(object.name);
+        surface.modifierName = std::move(object.modifier);
+        surface.loc = std::move(object.loc);
         surfaces_->push_back(std::move(surface));
     }
 
@@ -565,8 +570,8 @@ private:
         if (mesh) {
             ReadMeshPrototype(in, *path, prototype);
         } else {
-            const OctreeFile octree = ReadOctree(in, *path);
-            const std::vector<SceneObject> objects = OctreeSceneObjects(octree, *path, options_, warn_);
+            OctreeFile octree = ReadOctree(in, *path);
+            std::vector<SceneObject> objects = OctreeSceneObjects(octree, *path, options_, warn_);
             prototype.cubeOrigin = octree.cubeOrigin;
             prototype.cubeSize = octree.cubeSize;
             // The octree's modifier names are its own (§13.1): build it with
@@ -575,7 +580,7 @@ private:
             auto savedNames = std::exchange(byName_, {});
             auto* savedSurfaces = std::exchange(surfaces_, &prototype.surfaces);
             auto* savedPlacements = std::exchange(placements_, &nested);
-            for (const SceneObject& o : objects) Add(o);
+            for (SceneObject& o : objects) Add(o);
             defs_ = std::move(savedDefs);
             byName_ = std::move(savedNames);
             surfaces_ = savedSurfaces;
@@ -600,7 +605,7 @@ private:
         auto savedNames = std::exchange(byName_, {});
         std::vector<int> defOf;
         defOf.reserve(file.materials.size());
-        for (const SceneObject& o : file.materials) {
+        for (SceneObject& o : file.materials) {
             Add(o);
             defOf.push_back(static_cast<int>(defs_.size()) - 1);
         }
@@ -889,10 +894,11 @@ private:
 
 }  // namespace
 
-Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn,
+Scene BuildScene(std::vector<SceneObject> objects, const WarningSink& warn,
                  const SceneLoadOptions& options) {
     SceneBuilder builder(warn, options);
-    for (const SceneObject& object : objects) builder.Add(object);
+    builder.ReserveSurfaces(objects.size());
+    for (SceneObject& object : objects) builder.Add(object);
     return builder.Finish();
 }
 

@@ -106,7 +106,7 @@ std::string CommandOutput(const std::string& command, const SceneLoadOptions& op
 /// Builds the scene an octree describes, with the octree's cube and header.
 Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptions& options,
                  const WarningSink& warn, bool firstLineRead = false) {
-    const OctreeFile octree = ReadOctree(in, name, firstLineRead);
+    OctreeFile octree = ReadOctree(in, name, firstLineRead);
     Scene scene = BuildScene(OctreeSceneObjects(octree, name, options, warn), warn, options);
     // The octree's cube is the scene's: -ar means what it means to Radiance
     // on the same file.
@@ -118,12 +118,12 @@ Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptio
 
 }  // namespace
 
-std::vector<SceneObject> OctreeSceneObjects(const OctreeFile& octree, const std::string& name,
+std::vector<SceneObject> OctreeSceneObjects(OctreeFile& octree, const std::string& name,
                                             const SceneLoadOptions& options,
                                             const WarningSink& warn) {
     std::vector<SceneObject> objects;
     if (octree.frozen()) {
-        objects = octree.objects;
+        objects = std::move(octree.objects);
     } else {
         for (const std::string& file : octree.sceneFiles) {
             std::ifstream f(file, std::ios::binary);
@@ -148,8 +148,7 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         std::string first;
         std::getline(std::cin, first);
         if (first == "#?RADIANCE") return LoadOctree(std::cin, "<stdin>", options, warn, true);
-        std::vector<SceneObject> objects = ReadSceneObjects(std::cin, "<stdin>", options, warn);
-        return BuildScene(objects, warn, options);
+        return BuildScene(ReadSceneObjects(std::cin, "<stdin>", options, warn), warn, options);
     }
     for (const std::string& file : files) {
         const bool command = file.starts_with("!");
@@ -195,7 +194,7 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         objects.insert(objects.end(), std::make_move_iterator(more.begin()),
                        std::make_move_iterator(more.end()));
     }
-    return BuildScene(objects, warn, options);
+    return BuildScene(std::move(objects), warn, options);
 }
 
 }  // namespace rt

@@ -41,16 +41,17 @@ std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& n
 /// unsupported types, degenerate geometry that Radiance treats as fatal.
 /// Octrees named by `instance` and mesh files named by `mesh` are found on
 /// RAYPATH and read here; `options` applies to the scene files of non-frozen
-/// instanced octrees.
-Scene BuildScene(const std::vector<SceneObject>& objects, const WarningSink& warn,
+/// instanced octrees. The objects are taken by value: pass them with
+/// std::move and each one's strings become its surface's, with no copy.
+Scene BuildScene(std::vector<SceneObject> objects, const WarningSink& warn,
                  const SceneLoadOptions& options = {});
 
 struct OctreeFile;
 /// The objects an octree describes: its own if frozen, else its scene files
 /// re-read relative to the current directory (with their `!commands`) and
 /// checked against it (Radiance's stale-octree test). `name` is the octree's,
-/// for messages.
-std::vector<SceneObject> OctreeSceneObjects(const OctreeFile& octree, const std::string& name,
+/// for messages. A frozen octree's objects are moved out of it, not copied.
+std::vector<SceneObject> OctreeSceneObjects(OctreeFile& octree, const std::string& name,
                                             const SceneLoadOptions& options,
                                             const WarningSink& warn);
 

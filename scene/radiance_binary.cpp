@@ -22,7 +22,7 @@ void RadianceBinaryReader::Fail(long long at, const std::string& what) const {
 }
 
 int RadianceBinaryReader::Byte(const char* what) {
-    const int c = in_.get();
+    const int c = buf_->sbumpc();
     if (c == std::char_traits<char>::eof()) Fail(truncated_ + " (reading " + std::string(what) + ")");
     ++offset_;
     return c;
@@ -55,7 +55,7 @@ std::string RadianceBinaryReader::String(const char* what) {
 bool RadianceBinaryReader::Line(std::string& line) {
     line.clear();
     for (;;) {
-        const int c = in_.get();
+        const int c = buf_->sbumpc();
         if (c == std::char_traits<char>::eof()) return !line.empty();
         ++offset_;
         if (c == '\n') return true;
@@ -104,10 +104,16 @@ double ReadCubeNumber(RadianceBinaryReader& r, const char* what) {
 }
 
 std::vector<LeafEntry> ReadTreeLeaves(RadianceBinaryReader& r, int objsize, long long bound) {
-    // Each entry sits in many leaves: the list is cut back to unique entries
+    // Each entry sits in many leaves. With a bound, the first listing of each
+    // is kept in a table indexed by the entry; its size is capped, since the
+    // bound is the file's own claim, and above the cap the list below is used.
+    // Without (or beyond the cap), the list is cut back to unique entries
     // whenever it has doubled, so its memory follows the number of distinct
     // entries, not the size of the tree.
+    constexpr long long kMaxTable = 1LL << 20;
     constexpr std::size_t kCompactSlack = 1 << 20;
+    const bool tabled = bound >= 0 && bound <= kMaxTable;
+    std::vector<long long> firstAt(tabled ? static_cast<std::size_t>(bound) : 0, -1);
     std::vector<LeafEntry> leaves;
     const auto compact = [&leaves] {
         std::sort(leaves.begin(), leaves.end(), [](const LeafEntry& a, const LeafEntry& b) {
@@ -140,6 +146,11 @@ std::vector<LeafEntry> ReadTreeLeaves(RadianceBinaryReader& r, int objsize, long
                                                          std::to_string(bound) + " objects)"
                                                    : "bad leaf entry " + std::to_string(index));
                     }
+                    if (tabled) {
+                        long long& first = firstAt[static_cast<std::size_t>(index)];
+                        if (first < 0) first = entryAt;
+                        continue;
+                    }
                     leaves.push_back({index, entryAt});
                     if (leaves.size() >= compactAt) {
                         compact();
@@ -152,6 +163,12 @@ std::vector<LeafEntry> ReadTreeLeaves(RadianceBinaryReader& r, int objsize, long
             default: r.Fail(at, "bad octree node type");
         }
     }
+    if (tabled) {
+        for (std::size_t i = 0; i < firstAt.size(); ++i) {
+            if (firstAt[i] >= 0) leaves.push_back({static_cast<long long>(i), firstAt[i]});
+        }
+        return leaves;
+    }
     compact();
     return leaves;
 }
@@ -162,6 +179,11 @@ void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObject
     for (std::string t = r.String("type name"); !t.empty(); t = r.String("type name")) {
         types.push_back(std::move(t));
     }
+    // Growing the list copies it over and over into fresh memory; the count
+    // is the file's own claim, so a large one reserves only address space
+    // up to a bound (pages are touched as objects arrive).
+    constexpr long long kMaxReserve = 1LL << 22;
+    if (maxObjects > 0) objects.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReserve)));
     for (;;) {
         const long long at = r.offset();
         const int type = r.Byte("object type");
@@ -188,6 +210,7 @@ void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObject
         for (long long k = 0; k < ns; ++k) o.sargs.push_back(r.String("string argument"));
         const long long nr = r.Int(2, "real argument count");
         if (nr < 0) r.Fail(at, "bad real argument count");
+        o.rargs.reserve(static_cast<std::size_t>(nr));
         for (long long k = 0; k < nr; ++k) o.rargs.push_back(r.Real("real argument"));
         objects.push_back(std::move(o));
     }

@@ -29,7 +29,7 @@ public:
     /// stream's current position in the file.
     RadianceBinaryReader(std::istream& in, const std::string& name, long long offset,
                          std::string truncated)
-        : in_(in), name_(name), offset_(offset), truncated_(std::move(truncated)) {}
+        : buf_(in.rdbuf()), name_(name), offset_(offset), truncated_(std::move(truncated)) {}
 
     [[noreturn]] void Fail(const std::string& what) const { Fail(offset_, what); }
     [[noreturn]] void Fail(long long at, const std::string& what) const;
@@ -50,7 +50,9 @@ public:
     const std::string& name() const { return name_; }
 
 private:
-    std::istream& in_;
+    // Read through the stream's buffer: istream::get() builds a sentry per
+    // byte, which made it most of a frozen octree's reading time.
+    std::streambuf* buf_;
     const std::string& name_;
     long long offset_ = 0;
     std::string truncated_;

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "scene/loader.h"
+#include "scene/object_types.h"
 #include "scene/octree.h"
 #include "scene/reader.h"
 
@@ -77,6 +78,18 @@ TEST(Octree, FrozenSceneHasTheObjectsOfTheNamedOne) {
     // 5-byte reals: 0.73 within the format's 2^-31 relative resolution.
     EXPECT_NEAR(frozen.objects[0].rargs[0], 0.73, 1e-9);
     EXPECT_GE(frozen.objects[0].loc.byteOffset, 0);
+}
+
+TEST(Octree, LeavesListEverySurfaceOnce) {
+    // oconv puts every surface inside the cube in some leaf, and nothing
+    // else; the reader lists each listed object once, ascending.
+    const OctreeFile frozen = Read(Bytes("cornell_frozen.oct"));
+    std::vector<long long> surfaces;
+    for (std::size_t i = 0; i < frozen.objects.size(); ++i) {
+        if (IsSurfaceObjectType(frozen.objects[i].type)) surfaces.push_back(static_cast<long long>(i));
+    }
+    ASSERT_GT(surfaces.size(), 10u);
+    EXPECT_EQ(frozen.leafObjects, surfaces);
 }
 
 TEST(Octree, ForcedCubeIsTheScenesCube) {
