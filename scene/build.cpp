@@ -691,6 +691,7 @@ private:
         const auto& a = object.rargs;
         if (a.size() < 9 || a.size() % 3 != 0) BadArgs(object);
         Polygon polygon;
+        polygon.vertices.reserve(a.size() / 3);
         for (std::size_t i = 0; i < a.size(); i += 3) polygon.vertices.emplace_back(a[i], a[i + 1], a[i + 2]);
         auto& v = polygon.vertices;
         if (v.size() > 3 && LengthSquared(v.back() - v.front()) <= kFtiny * kFtiny) v.pop_back();
