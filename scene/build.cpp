@@ -895,12 +895,25 @@ private:
 
 }  // namespace
 
+class SceneAssembler::Impl {
+public:
+    Impl(const WarningSink& warn, const SceneLoadOptions& options) : builder(warn, options) {}
+    SceneBuilder builder;
+};
+
+SceneAssembler::SceneAssembler(const WarningSink& warn, const SceneLoadOptions& options)
+    : impl_(std::make_unique<Impl>(warn, options)) {}
+SceneAssembler::~SceneAssembler() = default;
+void SceneAssembler::Add(SceneObject& object) { impl_->builder.Add(object); }
+void SceneAssembler::ReserveSurfaces(std::size_t n) { impl_->builder.ReserveSurfaces(n); }
+Scene SceneAssembler::Finish() { return impl_->builder.Finish(); }
+
 Scene BuildScene(std::vector<SceneObject> objects, const WarningSink& warn,
                  const SceneLoadOptions& options) {
-    SceneBuilder builder(warn, options);
-    builder.ReserveSurfaces(objects.size());
-    for (SceneObject& object : objects) builder.Add(object);
-    return builder.Finish();
+    SceneAssembler assembler(warn, options);
+    assembler.ReserveSurfaces(objects.size());
+    for (SceneObject& object : objects) assembler.Add(object);
+    return assembler.Finish();
 }
 
 }  // namespace rt

@@ -15,6 +15,8 @@ namespace {
 struct ReadContext {
     const SceneLoadOptions& options;
     const WarningSink& warn;
+    FunctionRef<void(SceneObject&)> onObject;
+    std::size_t objects = 0;  // handed to onObject so far
 };
 
 /// Where objects from a command's output say they come from: the command line
@@ -28,10 +30,9 @@ std::string CommandSourceName(const FileLoc& loc, const std::string& command) {
 // `origin` is the outermost `!command` line (in a real file) that led here;
 // empty at the top level.
 void ReadItems(CharSource& source, const std::string& name, int depth, const FileLoc& origin,
-               const ReadContext& context, std::vector<SceneObject>& objects);
+               ReadContext& context);
 
-void RunCommand(const SceneItem& item, int depth, const FileLoc& origin,
-                const ReadContext& context, std::vector<SceneObject>& objects) {
+void RunCommand(const SceneItem& item, int depth, const FileLoc& origin, ReadContext& context) {
     const FileLoc& root = origin.file.empty() ? item.loc : origin;
     std::string shown = "!";
     shown += PrintableWord(item.text);
@@ -45,10 +46,10 @@ void RunCommand(const SceneItem& item, int depth, const FileLoc& origin,
     if (pipe.source() == nullptr) {
         throw Error(Error::Kind::System, item.loc, "cannot execute " + shown);
     }
-    const std::size_t before = objects.size();
+    const std::size_t before = context.objects;
     const std::string name = CommandSourceName(item.loc, item.text);
     try {
-        ReadItems(*pipe.source(), name, depth + 1, root, context, objects);
+        ReadItems(*pipe.source(), name, depth + 1, root, context);
     } catch (const Error&) {
         // A command that failed explains its garbage output better than the parser can.
         const std::string failure = pipe.Finish();
@@ -57,31 +58,40 @@ void RunCommand(const SceneItem& item, int depth, const FileLoc& origin,
     }
     const std::string failure = pipe.Finish();
     if (!failure.empty()) ThrowUserError(item.loc, "command failed (" + failure + "): " + shown);
-    if (objects.size() == before && context.warn) context.warn("(" + name + "): empty file");
+    if (context.objects == before && context.warn) context.warn("(" + name + "): empty file");
 }
 
 void ReadItems(CharSource& source, const std::string& name, int depth, const FileLoc& origin,
-               const ReadContext& context, std::vector<SceneObject>& objects) {
+               ReadContext& context) {
     SceneTextReader reader(source, name);
     for (SceneItem item = reader.Next(); item.kind != SceneItemKind::End; item = reader.Next()) {
         if (item.kind == SceneItemKind::Object) {
-            objects.push_back(std::move(item.object));
+            ++context.objects;
+            context.onObject(item.object);
         } else if (item.kind == SceneItemKind::Command) {
-            RunCommand(item, depth, origin, context, objects);
+            RunCommand(item, depth, origin, context);
         }
     }
 }
 
 }  // namespace
 
+std::size_t ReadSceneObjects(std::istream& in, const std::string& name,
+                             const SceneLoadOptions& options, const WarningSink& warn,
+                             FunctionRef<void(SceneObject&)> onObject) {
+    ReadContext context{options, warn, onObject};
+    IstreamCharSource source(in);
+    ReadItems(source, name, InheritedCommandDepth(), FileLoc{}, context);
+    if (context.objects == 0 && warn) warn("(" + name + "): empty file");
+    return context.objects;
+}
+
 std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& name,
                                           const SceneLoadOptions& options,
                                           const WarningSink& warn) {
-    const ReadContext context{options, warn};
     std::vector<SceneObject> objects;
-    IstreamCharSource source(in);
-    ReadItems(source, name, InheritedCommandDepth(), FileLoc{}, context, objects);
-    if (objects.empty() && warn) warn("(" + name + "): empty file");
+    ReadSceneObjects(in, name, options, warn,
+                     [&objects](SceneObject& o) { objects.push_back(std::move(o)); });
     return objects;
 }
 
@@ -106,8 +116,14 @@ std::string CommandOutput(const std::string& command, const SceneLoadOptions& op
 /// Builds the scene an octree describes, with the octree's cube and header.
 Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptions& options,
                  const WarningSink& warn, bool firstLineRead = false) {
-    OctreeFile octree = ReadOctree(in, name, firstLineRead);
-    Scene scene = BuildScene(OctreeSceneObjects(octree, name, options, warn), warn, options);
+    // A frozen octree's objects go straight into the scene as they are read;
+    // a named one's scene files are read whole first, for the stale-octree test.
+    SceneAssembler assembler(warn, options);
+    OctreeFile octree = ReadOctree(in, name, firstLineRead,
+                                   [&assembler](SceneObject& o) { assembler.Add(o); });
+    Scene scene = octree.frozen()
+                      ? assembler.Finish()
+                      : BuildScene(OctreeSceneObjects(octree, name, options, warn), warn, options);
     // The octree's cube is the scene's: -ar means what it means to Radiance
     // on the same file.
     scene.cubeOrigin = octree.cubeOrigin;
@@ -148,7 +164,10 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         std::string first;
         std::getline(std::cin, first);
         if (first == "#?RADIANCE") return LoadOctree(std::cin, "<stdin>", options, warn, true);
-        return BuildScene(ReadSceneObjects(std::cin, "<stdin>", options, warn), warn, options);
+        SceneAssembler assembler(warn, options);
+        ReadSceneObjects(std::cin, "<stdin>", options, warn,
+                         [&assembler](SceneObject& o) { assembler.Add(o); });
+        return assembler.Finish();
     }
     for (const std::string& file : files) {
         const bool command = file.starts_with("!");
@@ -176,11 +195,13 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         }
         return LoadOctree(*in, file, options, warn);
     }
-    std::vector<SceneObject> objects;
+    // Each object is interpreted as it is read (Radiance's readobj() also
+    // resolves modifiers as it goes).
+    SceneAssembler assembler(warn, options);
+    const auto add = [&assembler](SceneObject& o) { assembler.Add(o); };
     for (const std::string& file : files) {
-        std::vector<SceneObject> more;
         if (file == "-") {
-            more = ReadSceneObjects(std::cin, "<stdin>", options, warn);
+            ReadSceneObjects(std::cin, "<stdin>", options, warn, add);
         } else {
             std::error_code ec;
             if (std::filesystem::is_directory(file, ec)) {
@@ -188,13 +209,11 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
             }
             std::ifstream in(file, std::ios::binary);
             if (!in) ThrowSystemError("cannot open scene file \"" + file + "\"");
-            more = ReadSceneObjects(in, file, options, warn);
+            ReadSceneObjects(in, file, options, warn, add);
             if (in.bad()) ThrowSystemError("error reading scene file \"" + file + "\"");
         }
-        objects.insert(objects.end(), std::make_move_iterator(more.begin()),
-                       std::make_move_iterator(more.end()));
     }
-    return BuildScene(std::move(objects), warn, options);
+    return assembler.Finish();
 }
 
 }  // namespace rt

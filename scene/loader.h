@@ -6,11 +6,14 @@
 // the parts of oconv that build the scene.
 #pragma once
 
+#include <cstddef>
 #include <istream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/diagnostics.h"
+#include "core/function_ref.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -36,6 +39,12 @@ std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& n
                                           const SceneLoadOptions& options,
                                           const WarningSink& warn);
 
+/// The same, each object handed to `onObject` as soon as it is read (it may
+/// take the object's strings) instead of being kept. Returns how many.
+std::size_t ReadSceneObjects(std::istream& in, const std::string& name,
+                             const SceneLoadOptions& options, const WarningSink& warn,
+                             FunctionRef<void(SceneObject&)> onObject);
+
 /// Resolves modifiers and aliases and interprets every object. Throws rt::Error
 /// naming the object's file:line for undefined modifiers, bad argument counts,
 /// unsupported types, degenerate geometry that Radiance treats as fatal.
@@ -45,6 +54,28 @@ std::vector<SceneObject> ReadSceneObjects(std::istream& in, const std::string& n
 /// std::move and each one's strings become its surface's, with no copy.
 Scene BuildScene(std::vector<SceneObject> objects, const WarningSink& warn,
                  const SceneLoadOptions& options = {});
+
+/// BuildScene fed one object at a time, as a reader produces them, so that a
+/// large scene's objects are never all held at once: its load time is mostly
+/// the first touches of the memory it fills.
+class SceneAssembler {
+public:
+    explicit SceneAssembler(const WarningSink& warn, const SceneLoadOptions& options = {});
+    ~SceneAssembler();
+    SceneAssembler(const SceneAssembler&) = delete;
+    SceneAssembler& operator=(const SceneAssembler&) = delete;
+
+    /// Interprets the next object (BuildScene's errors); a surface takes its strings.
+    void Add(SceneObject& object);
+    /// Room for `n` more surfaces.
+    void ReserveSurfaces(std::size_t n);
+    /// The scene; the assembler is spent.
+    Scene Finish();
+
+private:
+    class Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 struct OctreeFile;
 /// The objects an octree describes: its own if frozen, else its scene files

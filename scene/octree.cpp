@@ -19,6 +19,49 @@ void ReadHeader(RadianceBinaryReader& r, OctreeFile& oct, bool firstLineRead) {
                           .lines;
 }
 
+[[noreturn]] void ThrowModifierInTree(const std::string& name, long long index,
+                                      const std::string& objectName) {
+    ThrowUserError(name + ": modifier in tree; octree stale? (object " + std::to_string(index) +
+                   ", \"" + objectName + "\")");
+}
+
+/// Everything up to a frozen octree's object section: header, cube, scene
+/// file names, object count and the tree's leaves.
+OctreeFile ReadUpToObjects(RadianceBinaryReader& r, bool firstLineRead, int& size) {
+    OctreeFile oct;
+    ReadHeader(r, oct, firstLineRead);
+    const long long magicAt = r.offset();
+    const long long magic = r.Int(2, "magic number");
+    const long long objsize = magic - kOctreeMagicBase;
+    if (objsize < 1 || objsize > detail::kMaxObjectSize) {
+        r.Fail(magicAt, "bad octree magic number " + std::to_string(magic));
+    }
+    size = static_cast<int>(objsize);
+    oct.cubeOrigin.x = detail::ReadCubeNumber(r, "cube origin");
+    oct.cubeOrigin.y = detail::ReadCubeNumber(r, "cube origin");
+    oct.cubeOrigin.z = detail::ReadCubeNumber(r, "cube origin");
+    const long long sizeAt = r.offset();
+    oct.cubeSize = detail::ReadCubeNumber(r, "cube size");
+    if (!(oct.cubeSize > 0)) r.Fail(sizeAt, "bad cube size");
+    for (std::string f = r.String("scene file name"); !f.empty(); f = r.String("scene file name")) {
+        oct.sceneFiles.push_back(std::move(f));
+    }
+    const long long countAt = r.offset();
+    oct.objectCount = r.Int(size, "object count");
+    if (oct.objectCount < 0) r.Fail(countAt, "bad object count");
+    for (const detail::LeafEntry& leaf : detail::ReadTreeLeaves(r, size, oct.objectCount)) {
+        oct.leafObjects.push_back(leaf.index);
+    }
+    return oct;
+}
+
+void CheckObjectCount(const RadianceBinaryReader& r, const OctreeFile& oct, std::size_t read) {
+    if (static_cast<long long>(read) != oct.objectCount) {
+        r.Fail("the octree holds " + std::to_string(read) + " objects, its count says " +
+               std::to_string(oct.objectCount));
+    }
+}
+
 }  // namespace
 
 bool LooksLikeOctree(std::istream& in) {
@@ -41,35 +84,31 @@ bool LooksLikeOctree(std::istream& in) {
 
 OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead) {
     RadianceBinaryReader r(in, name, firstLineRead ? sizeof("#?RADIANCE") : 0, "truncated octree");
-    OctreeFile oct;
-    ReadHeader(r, oct, firstLineRead);
-    const long long magicAt = r.offset();
-    const long long magic = r.Int(2, "magic number");
-    const long long objsize = magic - kOctreeMagicBase;
-    if (objsize < 1 || objsize > detail::kMaxObjectSize) {
-        r.Fail(magicAt, "bad octree magic number " + std::to_string(magic));
-    }
-    const int size = static_cast<int>(objsize);
-    oct.cubeOrigin.x = detail::ReadCubeNumber(r, "cube origin");
-    oct.cubeOrigin.y = detail::ReadCubeNumber(r, "cube origin");
-    oct.cubeOrigin.z = detail::ReadCubeNumber(r, "cube origin");
-    const long long sizeAt = r.offset();
-    oct.cubeSize = detail::ReadCubeNumber(r, "cube size");
-    if (!(oct.cubeSize > 0)) r.Fail(sizeAt, "bad cube size");
-    for (std::string f = r.String("scene file name"); !f.empty(); f = r.String("scene file name")) {
-        oct.sceneFiles.push_back(std::move(f));
-    }
-    const long long countAt = r.offset();
-    oct.objectCount = r.Int(size, "object count");
-    if (oct.objectCount < 0) r.Fail(countAt, "bad object count");
-    for (const detail::LeafEntry& leaf : detail::ReadTreeLeaves(r, size, oct.objectCount)) {
-        oct.leafObjects.push_back(leaf.index);
-    }
+    int size = 0;
+    OctreeFile oct = ReadUpToObjects(r, firstLineRead, size);
     if (oct.frozen()) {
         detail::ReadObjectSection(r, size, oct.objectCount, oct.objects);
-        if (static_cast<long long>(oct.objects.size()) != oct.objectCount) {
-            r.Fail("the octree holds " + std::to_string(oct.objects.size()) +
-                   " objects, its count says " + std::to_string(oct.objectCount));
+        CheckObjectCount(r, oct, oct.objects.size());
+    }
+    return oct;
+}
+
+OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead,
+                      FunctionRef<void(SceneObject&)> onObject) {
+    RadianceBinaryReader r(in, name, firstLineRead ? sizeof("#?RADIANCE") : 0, "truncated octree");
+    int size = 0;
+    OctreeFile oct = ReadUpToObjects(r, firstLineRead, size);
+    if (!oct.frozen()) return oct;
+    std::vector<bool> surface;
+    const std::vector<std::string> names =
+        detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
+            surface.push_back(IsSurfaceObjectType(o.type));
+            onObject(o);
+        });
+    CheckObjectCount(r, oct, names.size());
+    for (const long long index : oct.leafObjects) {
+        if (!surface[static_cast<std::size_t>(index)]) {
+            ThrowModifierInTree(name, index, names[static_cast<std::size_t>(index)]);
         }
     }
     return oct;
@@ -84,8 +123,7 @@ void CheckOctreeObjects(const OctreeFile& octree, const std::vector<SceneObject>
     }
     for (const long long index : octree.leafObjects) {
         if (!IsSurfaceObjectType(objects[index].type)) {
-            ThrowUserError(name + ": modifier in tree; octree stale? (object " +
-                           std::to_string(index) + ", \"" + objects[index].name + "\")");
+            ThrowModifierInTree(name, index, objects[index].name);
         }
     }
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/function_ref.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
 
@@ -42,6 +43,13 @@ bool LooksLikeOctree(std::istream& in);
 /// the caller has already consumed the "#?RADIANCE" line. Throws rt::Error
 /// "name: byte N: ..." for anything malformed or truncated.
 OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead = false);
+
+/// The same, but a frozen octree's objects are handed to `onObject` one by
+/// one as they are read (it may take their strings) and not kept, and the
+/// leaves are checked against them here (CheckOctreeObjects' "modifier in
+/// tree"): a large scene's objects are never all held at once.
+OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead,
+                      FunctionRef<void(SceneObject&)> onObject);
 
 /// Radiance's stale-octree checks, once the scene files of a non-frozen octree
 /// have been read into `objects`: the same object count, and leaves that list

@@ -173,17 +173,15 @@ std::vector<LeafEntry> ReadTreeLeaves(RadianceBinaryReader& r, int objsize, long
     return leaves;
 }
 
-void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObjects,
-                       std::vector<SceneObject>& objects) {
+std::vector<std::string> ReadObjectSection(RadianceBinaryReader& r, int objsize,
+                                           long long maxObjects,
+                                           FunctionRef<void(SceneObject&)> onObject) {
     std::vector<std::string> types;
     for (std::string t = r.String("type name"); !t.empty(); t = r.String("type name")) {
         types.push_back(std::move(t));
     }
-    // Growing the list copies it over and over into fresh memory; the count
-    // is the file's own claim, so a large one reserves only address space
-    // up to a bound (pages are touched as objects arrive).
-    constexpr long long kMaxReserve = 1LL << 22;
-    if (maxObjects > 0) objects.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReserve)));
+    // Modifiers are named by index among the objects before them.
+    std::vector<std::string> names;
     for (;;) {
         const long long at = r.offset();
         const int type = r.Byte("object type");
@@ -194,7 +192,7 @@ void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObject
         SceneObject o;
         o.loc = FileLoc{r.name(), 0, at};
         o.type = types[type];
-        const long long self = static_cast<long long>(objects.size());
+        const long long self = static_cast<long long>(names.size());
         if (maxObjects >= 0 && self >= maxObjects) r.Fail(at, "more objects than the octree's count");
         const long long mod = r.Int(objsize, "modifier index");
         if (mod == -1) {
@@ -202,7 +200,7 @@ void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObject
         } else if (mod < 0 || mod >= self) {
             r.Fail(at, "bad modifier index " + std::to_string(mod));
         } else {
-            o.modifier = objects[mod].name;
+            o.modifier = names[static_cast<std::size_t>(mod)];
         }
         o.name = r.String("identifier");
         const long long ns = r.Int(2, "string argument count");
@@ -212,8 +210,21 @@ void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObject
         if (nr < 0) r.Fail(at, "bad real argument count");
         o.rargs.reserve(static_cast<std::size_t>(nr));
         for (long long k = 0; k < nr; ++k) o.rargs.push_back(r.Real("real argument"));
-        objects.push_back(std::move(o));
+        names.push_back(o.name);
+        onObject(o);
     }
+    return names;
+}
+
+void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObjects,
+                       std::vector<SceneObject>& objects) {
+    // Growing the list copies it over and over into fresh memory; the count
+    // is the file's own claim, so a large one reserves only address space
+    // up to a bound (pages are touched as objects arrive).
+    constexpr long long kMaxReserve = 1LL << 22;
+    if (maxObjects > 0) objects.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReserve)));
+    ReadObjectSection(r, objsize, maxObjects,
+                      [&objects](SceneObject& o) { objects.push_back(std::move(o)); });
 }
 
 }  // namespace rt::detail

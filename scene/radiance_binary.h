@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/function_ref.h"
 #include "scene/scene.h"
 
 namespace rt::detail {
@@ -102,5 +103,12 @@ std::vector<LeafEntry> ReadTreeLeaves(RadianceBinaryReader& r, int objsize, long
 /// objects than that are an error.
 void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObjects,
                        std::vector<SceneObject>& objects);
+
+/// The same section, each object handed to `onObject` as soon as it is read
+/// (which may take its strings) instead of being kept. Returns every object's
+/// identifier, in order.
+std::vector<std::string> ReadObjectSection(RadianceBinaryReader& r, int objsize,
+                                           long long maxObjects,
+                                           FunctionRef<void(SceneObject&)> onObject);
 
 }  // namespace rt::detail

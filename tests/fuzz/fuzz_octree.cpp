@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 //
 // Fuzz target: arbitrary bytes as an octree file through ReadOctree, and for
-// a frozen octree its objects through the stale checks and BuildScene, as
-// LoadScene would take them. rt::Error is the expected way to reject input;
+// a frozen octree its objects through the stale checks and BuildScene; then
+// the same bytes as LoadScene reads them, each object built as it is read. rt::Error is the expected way to reject input;
 // any other exception, a crash, UB, a hang or memory out of proportion to the
 // input is a finding.
 #include <sstream>
@@ -29,6 +29,14 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
         }
     } catch (const rt::Error&) {
         // Rejected input: expected.
+    }
+    try {
+        std::istringstream again(bytes);
+        rt::SceneAssembler assembler(warn, options);
+        const rt::OctreeFile octree = rt::ReadOctree(
+            again, "fuzz.oct", false, [&assembler](rt::SceneObject& o) { assembler.Add(o); });
+        if (octree.frozen()) static_cast<void>(assembler.Finish());
+    } catch (const rt::Error&) {
     }
     return 0;
 }

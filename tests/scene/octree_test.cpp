@@ -78,6 +78,19 @@ TEST(Octree, FrozenSceneHasTheObjectsOfTheNamedOne) {
     // 5-byte reals: 0.73 within the format's 2^-31 relative resolution.
     EXPECT_NEAR(frozen.objects[0].rargs[0], 0.73, 1e-9);
     EXPECT_GE(frozen.objects[0].loc.byteOffset, 0);
+    // Every object as the scene file has it: modifiers (stored as indices)
+    // named right, arguments within the 5-byte reals' resolution.
+    std::ifstream text(RT_SOURCE_DIR "/scenes/cornell/cornell.rad");
+    const std::vector<SceneObject> source = ReadSceneObjects(text, "cornell.rad", {}, nullptr);
+    ASSERT_EQ(source.size(), frozen.objects.size());
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        EXPECT_EQ(frozen.objects[i].modifier, source[i].modifier) << i;
+        EXPECT_EQ(frozen.objects[i].name, source[i].name) << i;
+        ASSERT_EQ(frozen.objects[i].rargs.size(), source[i].rargs.size()) << i;
+        for (std::size_t k = 0; k < source[i].rargs.size(); ++k) {
+            EXPECT_NEAR(frozen.objects[i].rargs[k], source[i].rargs[k], 1e-8) << i;
+        }
+    }
 }
 
 TEST(Octree, LeavesListEverySurfaceOnce) {
@@ -90,6 +103,71 @@ TEST(Octree, LeavesListEverySurfaceOnce) {
     }
     ASSERT_GT(surfaces.size(), 10u);
     EXPECT_EQ(frozen.leafObjects, surfaces);
+}
+
+TEST(Octree, StreamedObjectsAreTheKeptOnes) {
+    const std::string bytes = Bytes("cornell_frozen.oct");
+    const OctreeFile kept = Read(bytes);
+    std::vector<SceneObject> streamed;
+    std::istringstream in(bytes);
+    const OctreeFile rest = ReadOctree(in, "test.oct", false,
+                                       [&streamed](SceneObject& o) { streamed.push_back(o); });
+    EXPECT_TRUE(rest.objects.empty());
+    EXPECT_EQ(rest.leafObjects, kept.leafObjects);
+    ASSERT_EQ(streamed.size(), kept.objects.size());
+    for (std::size_t i = 0; i < streamed.size(); ++i) {
+        EXPECT_EQ(streamed[i].type, kept.objects[i].type) << i;
+        EXPECT_EQ(streamed[i].modifier, kept.objects[i].modifier) << i;
+        EXPECT_EQ(streamed[i].name, kept.objects[i].name) << i;
+        EXPECT_EQ(streamed[i].sargs, kept.objects[i].sargs) << i;
+        EXPECT_EQ(streamed[i].rargs, kept.objects[i].rargs) << i;
+        EXPECT_EQ(streamed[i].loc.byteOffset, kept.objects[i].loc.byteOffset) << i;
+    }
+}
+
+/// `bytes` (an octree) with its tree's first leaf entry naming object `index`.
+std::string WithFirstLeafNaming(std::string bytes, std::uint8_t index) {
+    std::size_t at = BinaryStart(bytes);
+    const int objsize = ((static_cast<std::uint8_t>(bytes[at]) << 8) |
+                         static_cast<std::uint8_t>(bytes[at + 1])) - 283;
+    at += 2;
+    for (int nul = 0; nul < 5; ++at) nul += bytes[at] == '\0';  // cube, empty file list
+    at += static_cast<std::size_t>(objsize);                   // object count
+    // Pre-order: interior (2) and empty (0) node bytes up to the first leaf.
+    while (bytes[at] == 0 || bytes[at] == 2) ++at;
+    EXPECT_EQ(bytes[at], 1);
+    at += 1 + static_cast<std::size_t>(objsize);  // its type and size
+    for (int k = 0; k < objsize; ++k) bytes[at + static_cast<std::size_t>(k)] = 0;
+    bytes[at + static_cast<std::size_t>(objsize) - 1] = static_cast<char>(index);
+    return bytes;
+}
+
+TEST(Octree, FrozenLeafNamingAMaterialIsStale) {
+    // Object 0 of cornell.rad is the material "white"; a leaf that names it
+    // is Radiance's "modifier in tree", however the objects are read.
+    const std::string bad = WithFirstLeafNaming(Bytes("cornell_frozen.oct"), 0);
+    const std::string expected = "test.oct: modifier in tree; octree stale? (object 0, \"white\")";
+    try {
+        std::istringstream in(bad);
+        SceneAssembler assembler(nullptr);
+        ReadOctree(in, "test.oct", false, [&assembler](SceneObject& o) { assembler.Add(o); });
+        FAIL() << "accepted a leaf naming a material";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), expected);
+    }
+    OctreeFile kept = Read(bad);
+    try {
+        CheckOctreeObjects(kept, kept.objects, "test.oct");
+        FAIL() << "accepted a leaf naming a material";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), expected);
+    }
+    // The untouched file passes both ways.
+    const std::string good = WithFirstLeafNaming(Bytes("cornell_frozen.oct"), 4);
+    std::istringstream in(good);
+    SceneAssembler assembler(nullptr);
+    EXPECT_NO_THROW(
+        ReadOctree(in, "test.oct", false, [&assembler](SceneObject& o) { assembler.Add(o); }));
 }
 
 TEST(Octree, ForcedCubeIsTheScenesCube) {
