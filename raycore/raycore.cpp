@@ -987,13 +987,20 @@ RayCore::Impl::UserKind& RayCore::Impl::ChooseUserKind(UserKind& all, UserKind& 
 void RayCore::Impl::MakePolygonQuads(Geometry& geometry) {
     if (!geometry.quadStart.empty()) return;
     const auto& surfaces = *geometry.surfaces;
-    std::size_t vertexCount = 0;
+    // Sized once: growing them would touch twice the memory, and a large
+    // scene's start-up is mostly first touches of memory. A polygon of n
+    // vertices makes at most n - 2 quads.
+    std::size_t vertexCount = 0, quadBound = 0;
     for (const Surface& surface : surfaces) {
         if (surface.type == SurfaceType::Polygon) {
-            vertexCount += std::get<Polygon>(surface.shape).vertices.size();
+            const std::size_t n = std::get<Polygon>(surface.shape).vertices.size();
+            vertexCount += n;
+            quadBound += n - 2;
         }
     }
     geometry.polygonVertices.reserve(3 * vertexCount + 1);
+    geometry.polygonQuads.reserve(quadBound);
+    geometry.polygonPlanes.reserve(quadBound);
     geometry.quadStart.reserve(surfaces.size() + 1);
     for (size_t i = 0; i < surfaces.size(); ++i) {
         geometry.quadStart.push_back(static_cast<unsigned>(geometry.polygonQuads.size()));

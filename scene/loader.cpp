@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "scene/loader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -116,14 +117,28 @@ std::string CommandOutput(const std::string& command, const SceneLoadOptions& op
 /// Builds the scene an octree describes, with the octree's cube and header.
 Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptions& options,
                  const WarningSink& warn, bool firstLineRead = false) {
-    // A frozen octree's objects go straight into the scene as they are read;
-    // a named one's scene files are read whole first, for the stale-octree test.
+    // Either way each object goes into the scene as it is read: a frozen
+    // octree's own, or a named one's scene files' (then checked against the
+    // octree, as Radiance's readoct does after readobj).
     SceneAssembler assembler(warn, options);
-    OctreeFile octree = ReadOctree(in, name, firstLineRead,
-                                   [&assembler](SceneObject& o) { assembler.Add(o); });
-    Scene scene = octree.frozen()
-                      ? assembler.Finish()
-                      : BuildScene(OctreeSceneObjects(octree, name, options, warn), warn, options);
+    // The count is the file's claim: room for at most a bounded number of
+    // surfaces (address space; pages are touched as surfaces arrive).
+    static constexpr long long kMaxReserve = 1LL << 22;
+    OctreeFile octree = ReadOctree(
+        in, name, firstLineRead, [&assembler](SceneObject& o) { assembler.Add(o); },
+        [&assembler](long long count) {
+            assembler.ReserveSurfaces(static_cast<std::size_t>(std::min(count, kMaxReserve)));
+        });
+    if (!octree.frozen()) {
+        assembler.ReserveSurfaces(static_cast<std::size_t>(std::min(octree.objectCount, kMaxReserve)));
+        OctreeObjectTally tally;
+        ReadOctreeSceneFiles(octree, name, options, warn, [&](SceneObject& o) {
+            tally.Add(o);
+            assembler.Add(o);
+        });
+        CheckOctreeObjects(octree, tally, name);
+    }
+    Scene scene = assembler.Finish();
     // The octree's cube is the scene's: -ar means what it means to Radiance
     // on the same file.
     scene.cubeOrigin = octree.cubeOrigin;
@@ -134,6 +149,16 @@ Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptio
 
 }  // namespace
 
+void ReadOctreeSceneFiles(const OctreeFile& octree, const std::string& name,
+                          const SceneLoadOptions& options, const WarningSink& warn,
+                          FunctionRef<void(SceneObject&)> onObject) {
+    for (const std::string& file : octree.sceneFiles) {
+        std::ifstream f(file, std::ios::binary);
+        if (!f) ThrowSystemError(name + ": cannot open its scene file \"" + file + "\"");
+        ReadSceneObjects(f, file, options, warn, onObject);
+    }
+}
+
 std::vector<SceneObject> OctreeSceneObjects(OctreeFile& octree, const std::string& name,
                                             const SceneLoadOptions& options,
                                             const WarningSink& warn) {
@@ -141,13 +166,8 @@ std::vector<SceneObject> OctreeSceneObjects(OctreeFile& octree, const std::strin
     if (octree.frozen()) {
         objects = std::move(octree.objects);
     } else {
-        for (const std::string& file : octree.sceneFiles) {
-            std::ifstream f(file, std::ios::binary);
-            if (!f) ThrowSystemError(name + ": cannot open its scene file \"" + file + "\"");
-            auto more = ReadSceneObjects(f, file, options, warn);
-            objects.insert(objects.end(), std::make_move_iterator(more.begin()),
-                           std::make_move_iterator(more.end()));
-        }
+        ReadOctreeSceneFiles(octree, name, options, warn,
+                             [&objects](SceneObject& o) { objects.push_back(std::move(o)); });
     }
     CheckOctreeObjects(octree, objects, name);
     return objects;

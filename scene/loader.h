@@ -86,6 +86,12 @@ std::vector<SceneObject> OctreeSceneObjects(OctreeFile& octree, const std::strin
                                             const SceneLoadOptions& options,
                                             const WarningSink& warn);
 
+/// A named octree's scene files, re-read relative to the current directory
+/// (with their `!commands`), each object handed to `onObject` as it is read.
+void ReadOctreeSceneFiles(const OctreeFile& octree, const std::string& name,
+                          const SceneLoadOptions& options, const WarningSink& warn,
+                          FunctionRef<void(SceneObject&)> onObject);
+
 /// Reads the files in order ("-" is standard input) and builds the scene.
 Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& options,
                 const WarningSink& warn);

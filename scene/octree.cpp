@@ -94,38 +94,47 @@ OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineR
 }
 
 OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead,
-                      FunctionRef<void(SceneObject&)> onObject) {
+                      FunctionRef<void(SceneObject&)> onObject,
+                      FunctionRef<void(long long)> onCount) {
     RadianceBinaryReader r(in, name, firstLineRead ? sizeof("#?RADIANCE") : 0, "truncated octree");
     int size = 0;
     OctreeFile oct = ReadUpToObjects(r, firstLineRead, size);
     if (!oct.frozen()) return oct;
-    std::vector<bool> surface;
-    const std::vector<std::string> names =
-        detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
-            surface.push_back(IsSurfaceObjectType(o.type));
-            onObject(o);
-        });
-    CheckObjectCount(r, oct, names.size());
-    for (const long long index : oct.leafObjects) {
-        if (!surface[static_cast<std::size_t>(index)]) {
-            ThrowModifierInTree(name, index, names[static_cast<std::size_t>(index)]);
+    onCount(oct.objectCount);
+    OctreeObjectTally tally;
+    detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
+        tally.Add(o);
+        onObject(o);
+    });
+    CheckObjectCount(r, oct, tally.names.size());
+    CheckOctreeObjects(oct, tally, name);
+    return oct;
+}
+
+void OctreeObjectTally::Add(const SceneObject& object) {
+    surface.push_back(IsSurfaceObjectType(object.type));
+    names.push_back(object.name);
+}
+
+void CheckOctreeObjects(const OctreeFile& octree, const OctreeObjectTally& objects,
+                        const std::string& name) {
+    if (static_cast<long long>(objects.names.size()) != octree.objectCount) {
+        ThrowUserError(name + ": bad object count; octree stale? (" +
+                       std::to_string(objects.names.size()) + " objects in its scene files, " +
+                       std::to_string(octree.objectCount) + " in the octree)");
+    }
+    for (const long long index : octree.leafObjects) {
+        if (!objects.surface[static_cast<std::size_t>(index)]) {
+            ThrowModifierInTree(name, index, objects.names[static_cast<std::size_t>(index)]);
         }
     }
-    return oct;
 }
 
 void CheckOctreeObjects(const OctreeFile& octree, const std::vector<SceneObject>& objects,
                         const std::string& name) {
-    if (static_cast<long long>(objects.size()) != octree.objectCount) {
-        ThrowUserError(name + ": bad object count; octree stale? (" +
-                       std::to_string(objects.size()) + " objects in its scene files, " +
-                       std::to_string(octree.objectCount) + " in the octree)");
-    }
-    for (const long long index : octree.leafObjects) {
-        if (!IsSurfaceObjectType(objects[index].type)) {
-            ThrowModifierInTree(name, index, objects[index].name);
-        }
-    }
+    OctreeObjectTally tally;
+    for (const SceneObject& o : objects) tally.Add(o);
+    CheckOctreeObjects(octree, tally, name);
 }
 
 }  // namespace rt

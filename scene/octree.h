@@ -47,13 +47,27 @@ OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineR
 /// The same, but a frozen octree's objects are handed to `onObject` one by
 /// one as they are read (it may take their strings) and not kept, and the
 /// leaves are checked against them here (CheckOctreeObjects' "modifier in
-/// tree"): a large scene's objects are never all held at once.
+/// tree"): a large scene's objects are never all held at once. `onCount`
+/// first hears how many objects the octree says it holds (a claim, unchecked
+/// until they have been read).
 OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead,
-                      FunctionRef<void(SceneObject&)> onObject);
+                      FunctionRef<void(SceneObject&)> onObject,
+                      FunctionRef<void(long long)> onCount = [](long long) {});
+
+/// What the stale-octree checks need of each object, noted as the objects go
+/// by (so that they need not be kept): whether it is a surface, its name.
+struct OctreeObjectTally {
+    std::vector<bool> surface;
+    std::vector<std::string> names;
+    void Add(const SceneObject& object);
+};
 
 /// Radiance's stale-octree checks, once the scene files of a non-frozen octree
-/// have been read into `objects`: the same object count, and leaves that list
-/// only surfaces. Throws rt::Error naming the octree.
+/// have been read: the same object count, and leaves that list only
+/// surfaces. Throws rt::Error naming the octree.
+void CheckOctreeObjects(const OctreeFile& octree, const OctreeObjectTally& objects,
+                        const std::string& name);
+/// The same for objects kept.
 void CheckOctreeObjects(const OctreeFile& octree, const std::vector<SceneObject>& objects,
                         const std::string& name);
 
