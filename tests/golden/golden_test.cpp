@@ -387,6 +387,21 @@ TEST(GoldenOctree, StaleOctreeIsAnError) {
         << r.out;
 }
 
+/// stale_undefined.oct was made when its scene file had two objects; the
+/// third it has now names an undefined modifier. Radiance reports that error,
+/// met while reading the file, before it counts the objects (its output in
+/// stale_undefined_radiance.txt); so does lazyrad, which builds each object
+/// as it reads it.
+TEST(GoldenOctree, SceneFileErrorComesBeforeTheStaleCount) {
+    const rt::testing::ShellResult r = rt::testing::RunShell(
+        "echo '0 0 5 0 0 -1' | " + InOctreeFolder("-h stale_undefined.oct 2>&1"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.out.find("rtrace: fatal - stale_undefined.rad:3: undefined modifier \"nosuch\""),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find("stale?"), std::string::npos) << r.out;
+}
+
 /// skyplane at -ab 0: the sky is a zero-radius glow, not a light source, so
 /// the irradiance above the ground is 0 and the ground looks black.
 TEST(Golden, SkyplaneWithoutBouncesIsDark) {

@@ -41,3 +41,9 @@ printf 'void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey sphere ball 0 0 4 0 0 0 1\n' 
 oconv stale.rad > stale.oct
 printf 'grey sphere ball2 0 0 4 3 0 0 1\n' >> stale.rad
 { echo "0 0 5 0 0 -1" | rtrace -h stale.oct || true; } > stale_radiance.txt 2>&1
+# Stale, and the new object names an undefined modifier: Radiance reports the
+# scene file's error, met while reading it, before it counts the objects.
+printf 'void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey sphere ball 0 0 4 0 0 0 1\n' > stale_undefined.rad
+oconv stale_undefined.rad > stale_undefined.oct
+printf 'nosuch sphere ball2 0 0 4 3 0 0 1\n' >> stale_undefined.rad
+{ echo "0 0 5 0 0 -1" | rtrace -h stale_undefined.oct || true; } > stale_undefined_radiance.txt 2>&1
