@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scene/octree.h"
+#include "scene/radiance_binary.h"
 #include "scene/reader.h"
 
 namespace rt {
@@ -121,16 +122,13 @@ Scene LoadOctree(std::istream& in, const std::string& name, const SceneLoadOptio
     // octree's own, or a named one's scene files' (then checked against the
     // octree, as Radiance's readoct does after readobj).
     SceneAssembler assembler(warn, options);
-    // The count is the file's claim: room for at most a bounded number of
-    // surfaces (address space; pages are touched as surfaces arrive).
-    static constexpr long long kMaxReserve = 1LL << 22;
     OctreeFile octree = ReadOctree(
         in, name, firstLineRead, [&assembler](SceneObject& o) { assembler.Add(o); },
         [&assembler](long long count) {
-            assembler.ReserveSurfaces(static_cast<std::size_t>(std::min(count, kMaxReserve)));
+            assembler.ReserveSurfaces(
+                static_cast<std::size_t>(std::min(count, detail::kMaxReservedObjects)));
         });
     if (!octree.frozen()) {
-        assembler.ReserveSurfaces(static_cast<std::size_t>(std::min(octree.objectCount, kMaxReserve)));
         OctreeObjectTally tally;
         ReadOctreeSceneFiles(octree, name, options, warn, [&](SceneObject& o) {
             tally.Add(o);

@@ -99,8 +99,8 @@ OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineR
     RadianceBinaryReader r(in, name, firstLineRead ? sizeof("#?RADIANCE") : 0, "truncated octree");
     int size = 0;
     OctreeFile oct = ReadUpToObjects(r, firstLineRead, size);
-    if (!oct.frozen()) return oct;
     onCount(oct.objectCount);
+    if (!oct.frozen()) return oct;
     OctreeObjectTally tally;
     detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
         tally.Add(o);

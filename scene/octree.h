@@ -48,8 +48,8 @@ OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineR
 /// one as they are read (it may take their strings) and not kept, and the
 /// leaves are checked against them here (CheckOctreeObjects' "modifier in
 /// tree"): a large scene's objects are never all held at once. `onCount`
-/// first hears how many objects the octree says it holds (a claim, unchecked
-/// until they have been read).
+/// first hears how many objects the octree says it holds, frozen or not (a
+/// claim, checked only once they have been read).
 OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineRead,
                       FunctionRef<void(SceneObject&)> onObject,
                       FunctionRef<void(long long)> onCount = [](long long) {});

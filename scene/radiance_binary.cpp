@@ -218,11 +218,9 @@ std::vector<std::string> ReadObjectSection(RadianceBinaryReader& r, int objsize,
 
 void ReadObjectSection(RadianceBinaryReader& r, int objsize, long long maxObjects,
                        std::vector<SceneObject>& objects) {
-    // Growing the list copies it over and over into fresh memory; the count
-    // is the file's own claim, so a large one reserves only address space
-    // up to a bound (pages are touched as objects arrive).
-    constexpr long long kMaxReserve = 1LL << 22;
-    if (maxObjects > 0) objects.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReserve)));
+    if (maxObjects > 0) {
+        objects.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReservedObjects)));
+    }
     ReadObjectSection(r, objsize, maxObjects,
                       [&objects](SceneObject& o) { objects.push_back(std::move(o)); });
 }

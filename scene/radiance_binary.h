@@ -21,6 +21,13 @@ namespace rt::detail {
 
 inline constexpr int kMaxObjectSize = 8;  // readers accept object indices of 1 to 8 bytes
 
+/// Lists of a file's objects are sized once from its object count: growing
+/// them copies them over and over into fresh memory, and a large scene's
+/// start-up is mostly first touches of memory. The count is the file's own
+/// claim, so at most this many are reserved (address space: pages are
+/// touched as objects arrive).
+inline constexpr long long kMaxReservedObjects = 1LL << 22;
+
 /// Reads with Radiance's portio conventions, counting bytes from the start of
 /// the file for error messages. End of input inside an item is an error
 /// "<truncated> (reading <what>)".
