@@ -125,14 +125,20 @@ TEST(Octree, StreamedObjectsAreTheKeptOnes) {
     }
 }
 
-/// `bytes` (an octree) with its tree's first leaf entry naming object `index`.
-std::string WithFirstLeafNaming(std::string bytes, std::uint8_t index) {
+/// Offset of a frozen octree's object count, and its object size (bytes).
+std::size_t CountOffset(const std::string& bytes, int& objsize) {
     std::size_t at = BinaryStart(bytes);
-    const int objsize = ((static_cast<std::uint8_t>(bytes[at]) << 8) |
-                         static_cast<std::uint8_t>(bytes[at + 1])) - 283;
+    objsize = ((static_cast<std::uint8_t>(bytes[at]) << 8) |
+               static_cast<std::uint8_t>(bytes[at + 1])) - 283;
     at += 2;
     for (int nul = 0; nul < 5; ++at) nul += bytes[at] == '\0';  // cube, empty file list
-    at += static_cast<std::size_t>(objsize);                   // object count
+    return at;
+}
+
+/// `bytes` (an octree) with its tree's first leaf entry naming object `index`.
+std::string WithFirstLeafNaming(std::string bytes, std::uint8_t index) {
+    int objsize = 0;
+    std::size_t at = CountOffset(bytes, objsize) + static_cast<std::size_t>(objsize);
     // Pre-order: interior (2) and empty (0) node bytes up to the first leaf.
     while (bytes[at] == 0 || bytes[at] == 2) ++at;
     EXPECT_EQ(bytes[at], 1);
@@ -140,6 +146,29 @@ std::string WithFirstLeafNaming(std::string bytes, std::uint8_t index) {
     for (int k = 0; k < objsize; ++k) bytes[at + static_cast<std::size_t>(k)] = 0;
     bytes[at + static_cast<std::size_t>(objsize) - 1] = static_cast<char>(index);
     return bytes;
+}
+
+TEST(Octree, HugeClaimedObjectCountIsAnError) {
+    // Lists are sized from the count before the objects arrive; a file that
+    // claims 2^30 of them (22 in truth) must fail on the count, reserving only
+    // a bounded amount, whether its objects are kept or streamed.
+    std::string bytes = Bytes("cornell_frozen.oct");
+    int objsize = 0;
+    const std::size_t at = CountOffset(bytes, objsize);
+    ASSERT_EQ(objsize, 4);
+    bytes.replace(at, 4, std::string("\x40\0\0\0", 4));
+    const std::string expected = "the octree holds 22 objects, its count says 1073741824";
+    const std::string kept = ErrorOf(bytes);
+    EXPECT_NE(kept.find(expected), std::string::npos) << kept;
+    // As rtrace reads it (LoadScene streams a frozen octree's objects).
+    const std::string path = ::testing::TempDir() + "huge_count.oct";
+    std::ofstream(path, std::ios::binary) << bytes;
+    try {
+        LoadScene({path}, SceneLoadOptions{}, nullptr);
+        FAIL() << "accepted a count of 2^30";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
 }
 
 TEST(Octree, FrozenLeafNamingAMaterialIsStale) {
