@@ -85,6 +85,9 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
             return MaterialTransmits(scene, m.alternate, depth + 1);
         case MaterialType::Plastic:
         case MaterialType::Metal:
+        case MaterialType::Plastic2:
+        case MaterialType::Metal2:
+        case MaterialType::Trans2:  // m_aniso.c stops every shadow ray
         case MaterialType::Light:
         case MaterialType::Glow:
         case MaterialType::Spotlight:

@@ -47,6 +47,9 @@ struct MaterialSpec {
     MaterialType type;
     int minReals, maxReals;
     int maxStrings;  // illum/mirror take an optional alternate material
+    /// plastic2, metal2, trans2: the strings are the u direction's function,
+    /// `ux uy uz funcfile [xf]` (any number of transform words).
+    bool orientation = false;
 };
 
 constexpr MaterialSpec kMaterialSpecs[] = {
@@ -61,6 +64,9 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"glass", MaterialType::Glass, 3, 4, 0},
     {"dielectric", MaterialType::Dielectric, 5, 5, 0},
     {"interface", MaterialType::Interface, 8, 8, 0},
+    {"plastic2", MaterialType::Plastic2, 6, 6, 0, true},
+    {"metal2", MaterialType::Metal2, 6, 6, 0, true},
+    {"trans2", MaterialType::Trans2, 8, 8, 0, true},
 };
 
 const MaterialSpec* FindMaterialSpec(const std::string& type) {
@@ -115,6 +121,11 @@ constexpr PatternSpec kPatternSpecs[] = {
     {"mixdata", PatternType::MixData, ModifierKind::Mixture, 2, -1, 1, 1},
     {"mixpict", PatternType::MixPict, ModifierKind::Mixture, 2, 2, 1, 1, true},
 };
+
+/// An anisotropic material's strings, read as a texfunc's: three
+/// expressions, the function file, a transform.
+constexpr PatternSpec kOrientationSpec = {"orientation", PatternType::Orientation,
+                                          ModifierKind::Texture, 0, 3};
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
     for (const PatternSpec& spec : kPatternSpecs) {
@@ -322,7 +333,16 @@ private:
     }
 
     void AddPattern(const SceneObject& object) {
-        const PatternSpec& spec = *FindPatternSpec(object.type);
+        Pattern pattern = MakePattern(object, *FindPatternSpec(object.type));
+        const int modifier = ResolveModifier(object);
+        CheckMixtureModifier(object, pattern, modifier);
+        scene_.patterns.push_back(std::move(pattern));
+        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
+    }
+
+    /// The function modifier `object` describes by the layout of `spec`: its
+    /// data, transform and mixture sides, its expressions compiled.
+    Pattern MakePattern(const SceneObject& object, const PatternSpec& spec) {
         const auto& words = object.sargs;
         const std::string where = object.loc.ToString();
         Pattern pattern;
@@ -405,10 +425,7 @@ private:
                                   (spec.functions == 3 && functions.Arity(*f) >= 3);
             pattern.data.argCounts.push_back(allThree ? 3 : 1);
         }
-        const int modifier = ResolveModifier(object);
-        CheckMixtureModifier(object, pattern, modifier);
-        scene_.patterns.push_back(std::move(pattern));
-        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
+        return pattern;
     }
 
     /// The data files (sargs after the function names) or the picture of a
@@ -441,8 +458,14 @@ private:
         }
         const int modifier = ResolveModifier(object);
         const int nreals = static_cast<int>(object.rargs.size());
-        if (static_cast<int>(object.sargs.size()) > spec->maxStrings || nreals < spec->minReals ||
-            nreals > spec->maxReals) {
+        if (spec->orientation) {
+            // Radiance's own words for these (m_aniso.c, getfunc()).
+            if (nreals < spec->minReals || nreals > spec->maxReals) {
+                Fail(object, "bad number of real arguments");
+            }
+            if (object.sargs.size() < 4) Fail(object, "too few string arguments");
+        } else if (static_cast<int>(object.sargs.size()) > spec->maxStrings ||
+                   nreals < spec->minReals || nreals > spec->maxReals) {
             BadArgs(object);
         }
         Material material;
@@ -451,7 +474,14 @@ private:
         material.args = object.rargs;
         material.params = MakeMaterialParams(spec->type, material.args);
         material.loc = object.loc;
-        if (!object.sargs.empty() && object.sargs[0] != "void") {
+        if (spec->orientation) {
+            // Radiance stops at the first ray that meets such a surface
+            // ("roughness too small"); here when the scene loads.
+            const auto& p = std::get<AnisoParams>(material.params);
+            if (p.uRoughness <= kFtiny || p.vRoughness <= kFtiny) Fail(object, "roughness too small");
+            scene_.patterns.push_back(MakePattern(object, kOrientationSpec));
+            material.orientation = static_cast<int>(scene_.patterns.size()) - 1;
+        } else if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);
             if (!alternate) {
                 ThrowUserError(object.loc, "undefined alternate material \"" +

@@ -31,6 +31,9 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::Glass: return "glass";
         case MaterialType::Dielectric: return "dielectric";
         case MaterialType::Interface: return "interface";
+        case MaterialType::Plastic2: return "plastic2";
+        case MaterialType::Metal2: return "metal2";
+        case MaterialType::Trans2: return "trans2";
     }
     return "unknown";
 }
@@ -69,12 +72,15 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
             return DielectricParams{color, a[3] + a[4] / 500.0, Rgb(1, 1, 1), 1.0};
         case MaterialType::Interface:
             return DielectricParams{color, a[3], Rgb(a[4], a[5], a[6]), a[7]};
+        case MaterialType::Plastic2:
+        case MaterialType::Metal2: return AnisoParams{color, a[3], a[4], a[5], 0, 0};
+        case MaterialType::Trans2: return AnisoParams{color, a[3], a[4], a[5], a[6], a[7]};
     }
     return NormalParams{};
 }
 
 bool IsTransparentType(MaterialType type) {
-    return type == MaterialType::Trans || type == MaterialType::Glass ||
+    return type == MaterialType::Trans || type == MaterialType::Trans2 || type == MaterialType::Glass ||
            type == MaterialType::Dielectric || type == MaterialType::Interface;
 }
 

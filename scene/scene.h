@@ -43,9 +43,10 @@ struct SceneObject {
 
 /// Shading looks materials up in tables indexed by this (shading/materials.cpp).
 enum class MaterialType {
-    Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface
+    Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
+    Plastic2, Metal2, Trans2
 };
-inline constexpr std::size_t kMaterialTypeCount = 11;
+inline constexpr std::size_t kMaterialTypeCount = 14;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -80,8 +81,18 @@ struct DielectricParams {
     Rgb outsideColor{1, 1, 1};       // interface only
     double outsideIndex = 1;
 };
-using MaterialParams =
-    std::variant<NormalParams, LightParams, MirrorParams, GlassParams, DielectricParams>;
+/// plastic2, metal2 (6 reals) and trans2 (8 reals), m_aniso.c: as
+/// NormalParams with a facet slope along each of the surface's u and v
+/// directions (u from the material's orientation function).
+struct AnisoParams {
+    Rgb color;
+    double specularity = 0;
+    double uRoughness = 0, vRoughness = 0;  // RMS facet slopes, both > FTINY
+    double transmissivity = 0;              // trans2 only, as NormalParams
+    double transmittedSpecular = 0;
+};
+using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
+                                    DielectricParams, AnisoParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -112,12 +123,17 @@ struct Material {
     /// raytexture(m->omod)), indices into Scene::patterns in chain order.
     /// Mixtures on it never reach a material ("conflicting material").
     std::vector<int> patterns;
+    /// plastic2, metal2, trans2: the u direction's function (`ux uy uz
+    /// funcfile [xf]`), an index into Scene::patterns (PatternType::
+    /// Orientation, on no modifier chain); -1 for other types.
+    int orientation = -1;
     FileLoc loc;
 };
 
 enum class PatternType {
     BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, TexData, MixFunc, MixData,
-    MixPict
+    MixPict,
+    Orientation,  // an anisotropic material's u direction: a vector, turned as a texture's
 };
 
 /// What a function modifier does to a ray (radiance-functions.md §11.1).

@@ -26,7 +26,9 @@ constexpr double kFresnelThreshold = 0.017999;
 /// Attempts per rough specular sample before giving up (Radiance's MAXITER).
 constexpr int kMaxSpecularTries = 10;
 
-bool IsFlat(const Scene& scene, const TracedRay& ray) {
+}  // namespace
+
+bool IsFlatHit(const Scene& scene, const TracedRay& ray) {
     if (ray.surface < 0 || ray.hitDistant) return false;
     // Radiance's isflat(): faces and rings; a mesh triangle shading with its
     // own material is a face (its pseudo-object), one under an overriding
@@ -34,8 +36,6 @@ bool IsFlat(const Scene& scene, const TracedRay& ray) {
     const SurfaceType t = scene.HitSurface(ray.instance, ray.surface).type;
     return t == SurfaceType::Polygon || t == SurfaceType::Ring || t == SurfaceType::Mesh;
 }
-
-}  // namespace
 
 double PerturbedNormal(const Scene& scene, ThreadState& ts, const TracedRay& ray, Vec3& normal) {
     const Vec3 sum = ray.ron + ray.pert;
@@ -84,7 +84,7 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
     double pdot = ray.rod;
     if (textured) pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
     pdot = std::max(pdot, 0.001);  // non-zero for the direct term
-    const bool flat = IsFlat(setup.scene, ray);
+    const bool flat = IsFlatHit(setup.scene, ray);
 
     double rspec = p.specularity;
     double fest = 0.0;
@@ -376,7 +376,7 @@ void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
     ray.rcol += c;
     ray.mcol = c;
     if (relaying) return;
-    ray.rmt = ray.rot + (IsFlat(setup.scene, ray) && !textured ? child.EffectiveDistance() : 0.0);
+    ray.rmt = ray.rot + (IsFlatHit(setup.scene, ray) && !textured ? child.EffectiveDistance() : 0.0);
 }
 
 void ShadeGlass(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
@@ -534,6 +534,9 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeGlass,       // glass
         &ShadeDielectric,  // dielectric
         &ShadeDielectric,  // interface
+        &ShadeAniso,       // plastic2
+        &ShadeAniso,       // metal2
+        &ShadeAniso,       // trans2
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

@@ -23,6 +23,14 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
 /// plastic, metal and trans (normal.c); also the -i/-I Lambertian meter.
 void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// plastic2, metal2 and trans2 (m_aniso.c), in aniso.cpp.
+void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
+/// Radiance's isflat() for the surface a ray hit: polygons (mesh triangles
+/// shading with their own material among them) and rings. Flat surfaces
+/// widen highlights by the source's size.
+bool IsFlatHit(const Scene& scene, const TracedRay& ray);
+
 /// Radiance's raynormal(): sets `normal` to the shading normal N' =
 /// normalize(ron + pert), reflected in the plane normal to the ray if the
 /// perturbation tipped it to the ray's other side, and returns -dir·N'

@@ -152,49 +152,69 @@ bool Mix(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Pattern& mi
     return true;
 }
 
+/// The values of modifier `index` (in Scene::patterns) for this ray,
+/// evaluated in `space`, into v (entries it has no value for keep theirs).
+/// False after a math error, which a pattern, texture or mixture (`warn`)
+/// reports once per modifier.
+bool EvaluateModifier(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index,
+                      const PatternSpace& space, double v[3], bool warn) {
+    const cal::Program& functions = *scene.functions;
+    const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
+    // Mixtures recurse into ApplyModifiers through ShadeChain, so the
+    // context is set up afresh for each modifier.
+    cal::Context& context = *ts.functionContext;
+    const PatternChannels channels(ray, space);
+    context.SetChannels(&channels);
+    context.SetArguments(modifier.args, modifier.owner);
+    context.NextEvaluation();
+    if (modifier.data.arrays.empty()) {
+        for (std::size_t k = 0; k < modifier.values.size(); ++k) {
+            v[k] = functions.Evaluate(modifier.values[k], context);
+        }
+    } else {
+        // *data and *pict: the expressions are the coordinates (at most
+        // kMaxDataDimensions; pictures 2) of the data point.
+        double point[kMaxDataDimensions] = {};
+        for (std::size_t k = 0; k < modifier.values.size(); ++k) {
+            point[k] = functions.Evaluate(modifier.values[k], context);
+        }
+        const auto f = EvaluateDataLookup(
+            modifier.data, std::span<const double>(point, modifier.values.size()), functions,
+            context);
+        std::copy(f.begin(), f.end(), v);
+    }
+    context.SetChannels(nullptr);
+    if (context.mathError() == cal::MathError::None) return true;
+    // Radiance skips the modifier for this ray (a pattern counts as 1, a
+    // texture adds nothing, a mixture is no material) and warns; once per
+    // modifier here, not once per ray. An orientation is silently none.
+    if (warn && ts.patternWarned.insert(index).second) {
+        ts.Warn("compute error for " + modifier.owner + " (" + context.mathErrorText() + ")");
+    }
+    return false;
+}
+
 }  // namespace
+
+Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index) {
+    const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
+    const PatternSpace space(ray, modifier);
+    double v[3] = {0.0, 0.0, 0.0};
+    if (!EvaluateModifier(scene, ts, ray, index, space, v, false)) return Vec3();
+    // Turned by the material's own transform only (getacoords()): unlike a
+    // texture's displacement, not by an instance's, whose object space the
+    // function saw. Only its direction matters.
+    return modifier.worldFromPattern.Vector(Vec3(v[0], v[1], v[2]));
+}
 
 bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
                         const std::vector<int>& modifiers) {
     const Scene& scene = tree.setup().scene;
-    const cal::Program& functions = *scene.functions;
     for (const int index : modifiers) {
         const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
         const PatternSpace space(ray, modifier);
-        // Mixtures recurse into ApplyModifiers through ShadeChain, so the
-        // context is set up afresh for each modifier.
-        cal::Context& context = *ts.functionContext;
-        const PatternChannels channels(ray, space);
-        context.SetChannels(&channels);
-        context.SetArguments(modifier.args, modifier.owner);
-        context.NextEvaluation();
         double v[3] = {1.0, 1.0, 1.0};
-        if (modifier.data.arrays.empty()) {
-            for (std::size_t k = 0; k < modifier.values.size(); ++k) {
-                v[k] = functions.Evaluate(modifier.values[k], context);
-            }
-        } else {
-            // *data and *pict: the expressions are the coordinates (at most
-            // kMaxDataDimensions; pictures 2) of the data point.
-            double point[kMaxDataDimensions] = {};
-            for (std::size_t k = 0; k < modifier.values.size(); ++k) {
-                point[k] = functions.Evaluate(modifier.values[k], context);
-            }
-            const auto f = EvaluateDataLookup(
-                modifier.data, std::span<const double>(point, modifier.values.size()), functions,
-                context);
-            std::copy(f.begin(), f.end(), v);
-        }
-        context.SetChannels(nullptr);
-        if (context.mathError() != cal::MathError::None) {
-            // Radiance skips the modifier for this ray (a pattern counts as
-            // 1, a texture adds nothing, a mixture is no material) and warns;
-            // once per modifier here, not once per ray.
-            if (ts.patternWarned.insert(index).second) {
-                ts.Warn("compute error for " + modifier.owner + " (" + context.mathErrorText() + ")");
-            }
-            continue;
-        }
+        if (!EvaluateModifier(scene, ts, ray, index, space, v, true)) continue;
         switch (modifier.kind) {
             case ModifierKind::Pattern: {
                 const bool grey = modifier.type == PatternType::BrightFunc ||

@@ -21,4 +21,10 @@ class RayTree;
 bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
                         const std::vector<int>& modifiers);
 
+/// An anisotropic material's u direction at this hit (Radiance's
+/// getacoords() before the projection into the surface): orientation
+/// function `index` (Scene::patterns) evaluated in its space and turned into
+/// render space, not normalised; zero after a math error.
+Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index);
+
 }  // namespace rt

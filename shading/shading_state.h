@@ -131,6 +131,7 @@ struct ThreadState {
     std::unique_ptr<cal::Context> functionContext;
     std::unordered_set<int> patternWarned;  // patterns whose compute errors were reported
     std::unordered_set<const Surface*> perturbationWarned;  // illegal perturbations reported
+    std::unordered_set<const Material*> orientationWarned;  // illegal orientation vectors reported
     std::vector<SourceTally> sourceTallies;  // one per ShadingSetup::sources
     RenderStats stats;
     /// The ambient depth, the records made here and not yet handed out, and

@@ -20,6 +20,11 @@
 //   mixfunc of materials, void, patterns, textures and mixtures, seen by
 //   primary and shadow rays and as light sources; -ab 1; errors), answers in
 //   tests/data/textures/expected.txt.
+// - plastic2, metal2 and trans2 (tests/direct/generate_aniso.py: every
+//   orientation form on planes, balls and rings under three kinds of
+//   source, both sides, with patterns, textures and instances, sampled
+//   highlights, -ab 1, -i, errors), answers in tests/data/aniso/expected.txt;
+//   RAYPATH is that folder (its instance's octree).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -129,6 +134,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("patterns")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("datafiles")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("textures")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("aniso")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -209,7 +215,7 @@ Outcome RunLazyrad(const MatrixRun& r) {
     std::ifstream raysFile(DataDir(r.dataset) + r.rays);
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
-    if (r.dataset == "datafiles") {
+    if (r.dataset == "datafiles" || r.dataset == "aniso") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -316,6 +322,7 @@ INSTANTIATE_TEST_SUITE_P(DataFiles, DirectMatrix, ::testing::ValuesIn(Groups("da
                          GroupName);
 INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("textures")),
                          GroupName);
+INSTANTIATE_TEST_SUITE_P(Aniso, DirectMatrix, ::testing::ValuesIn(Groups("aniso")), GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -342,6 +349,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("patterns").size(), 6u);
     EXPECT_GE(Groups("datafiles").size(), 7u);
     EXPECT_GE(Groups("textures").size(), 8u);
+    EXPECT_GE(Groups("aniso").size(), 6u);
 }
 
 }  // namespace
