@@ -173,6 +173,17 @@ void Program::DefineRayVariables() {
     LoadText(text, "<ray variables>");
 }
 
+void Program::DefineBrdfVariables() {
+    if (brdfVariables_) return;
+    brdfVariables_ = true;
+    std::string text;
+    for (int i = 0; i < kBrdfChannelCount - kRayChannelCount; ++i) {
+        text += std::string(kBrdfVariableNames[static_cast<std::size_t>(i)]) + " = $" +
+                std::to_string(kRayChannelCount + i + 1) + ";\n";
+    }
+    LoadText(text, "<BRDF variables>");
+}
+
 void Program::LoadRayinit(const SearchPath& path) {
     const std::optional<SourceText> source = FindFunctionFile("rayinit.cal", path);
     if (!source) ThrowSystemError("cannot find function file \"rayinit.cal\"");

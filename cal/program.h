@@ -90,6 +90,11 @@ class Program {
 
     /// rtrace's global definitions Dx = $1 … Lv = $27 (§10.3).
     void DefineRayVariables();
+    /// The variables a BRDF material's function reads besides those (§10.4):
+    /// NxP = $28 … CbP = $34 (kBrdfChannelCount), defined once, when the
+    /// first such material loads (before it, as in Radiance, they are
+    /// undefined). Needs Options::channelCount >= kBrdfChannelCount.
+    void DefineBrdfVariables();
     /// rayinit.cal from `path` (RAYPATH, else lazyrad's built-in one) into the
     /// global context.
     void LoadRayinit(const SearchPath& path);
@@ -144,6 +149,7 @@ class Program {
     std::unordered_map<std::string, std::int32_t> slotIndex_;
     std::unordered_map<std::string, std::int32_t> nameIndex_;  // into code_.names
     std::set<std::string> loadedContexts_;
+    bool brdfVariables_ = false;
     std::uint64_t generation_ = 1;
 };
 

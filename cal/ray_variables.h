@@ -23,13 +23,21 @@ enum RayChannel : int {
     kKx, kKy, kKz,         // world z unit vector
     kTs,                   // length of this shadow-ray segment chain × S
     kLu, kLv,              // mesh (u, v); 0 elsewhere
+    // Set only while a BRDF material's function is evaluated (§10.4):
+    kNxP, kNyP, kNzP,      // perturbed normal, in function space / S
+    kRdotP,                // perturbed cosine, in [-1, 1]
+    kCrP, kCgP, kCbP,      // material colour times pattern colour
 };
 // clang-format on
 
 inline constexpr int kRayChannelCount = 27;
+inline constexpr int kBrdfChannelCount = 34;
 
 inline constexpr std::array<const char*, kRayChannelCount> kRayVariableNames = {
     "Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "T",  "Rdot", "S",  "Tx", "Ty",
     "Tz", "Ix", "Iy", "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "Ts",   "Lu", "Lv"};
+
+inline constexpr std::array<const char*, kBrdfChannelCount - kRayChannelCount> kBrdfVariableNames = {
+    "NxP", "NyP", "NzP", "RdotP", "CrP", "CgP", "CbP"};
 
 }  // namespace rt::cal

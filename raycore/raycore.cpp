@@ -88,6 +88,12 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Plastic2:
         case MaterialType::Metal2:
         case MaterialType::Trans2:  // m_aniso.c stops every shadow ray
+        case MaterialType::PlasFunc:
+        case MaterialType::MetFunc:
+        case MaterialType::TransFunc:  // so does m_brdf2()
+        case MaterialType::PlasData:
+        case MaterialType::MetData:
+        case MaterialType::TransData:
         case MaterialType::Light:
         case MaterialType::Glow:
         case MaterialType::Spotlight:

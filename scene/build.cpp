@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "cal/ray_variables.h"
 #include "core/conventions.h"
 #include "scene/loader.h"
 #include "scene/object_types.h"
@@ -42,15 +43,24 @@ constexpr double kVertexEpsilon = 1e-5;
 /// degenerate (the triangulator's collinearity threshold too).
 constexpr double kDegenerateArea = 1e-14;
 
+/// The kinds of function a material carries of its own (Material::function).
+enum class MaterialFunction {
+    None,
+    Orientation,  // plastic2, metal2, trans2: `ux uy uz funcfile [xf]`
+    Brdf,         // plasfunc, metfunc, transfunc: `func funcfile [xf]`
+    BrdfData,     // plasdata, metdata, transdata: `func datafile funcfile x1…xn [xf]`
+};
+
 struct MaterialSpec {
     const char* name;
     MaterialType type;
     int minReals, maxReals;
     int maxStrings;  // illum/mirror take an optional alternate material
-    /// plastic2, metal2, trans2: the strings are the u direction's function,
-    /// `ux uy uz funcfile [xf]` (any number of transform words).
-    bool orientation = false;
+    MaterialFunction function = MaterialFunction::None;
 };
+
+/// Real arguments beyond the named ones are the BRDF function's (A5…).
+constexpr int kAnyCount = std::numeric_limits<int>::max();
 
 constexpr MaterialSpec kMaterialSpecs[] = {
     {"plastic", MaterialType::Plastic, 5, 5, 0},
@@ -64,9 +74,15 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"glass", MaterialType::Glass, 3, 4, 0},
     {"dielectric", MaterialType::Dielectric, 5, 5, 0},
     {"interface", MaterialType::Interface, 8, 8, 0},
-    {"plastic2", MaterialType::Plastic2, 6, 6, 0, true},
-    {"metal2", MaterialType::Metal2, 6, 6, 0, true},
-    {"trans2", MaterialType::Trans2, 8, 8, 0, true},
+    {"plastic2", MaterialType::Plastic2, 6, 6, 0, MaterialFunction::Orientation},
+    {"metal2", MaterialType::Metal2, 6, 6, 0, MaterialFunction::Orientation},
+    {"trans2", MaterialType::Trans2, 8, 8, 0, MaterialFunction::Orientation},
+    {"plasfunc", MaterialType::PlasFunc, 4, kAnyCount, 0, MaterialFunction::Brdf},
+    {"metfunc", MaterialType::MetFunc, 4, kAnyCount, 0, MaterialFunction::Brdf},
+    {"transfunc", MaterialType::TransFunc, 6, kAnyCount, 0, MaterialFunction::Brdf},
+    {"plasdata", MaterialType::PlasData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
+    {"metdata", MaterialType::MetData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
+    {"transdata", MaterialType::TransData, 6, kAnyCount, 0, MaterialFunction::BrdfData},
 };
 
 const MaterialSpec* FindMaterialSpec(const std::string& type) {
@@ -108,6 +124,9 @@ struct PatternSpec {
     int functions = 0;
     int dataFiles = 0;
     bool picture = false;
+    /// The coordinates are names of functions of the light's direction
+    /// (plasdata…), kept after the spec's own functions, not expressions.
+    bool coordinateFunctions = false;
 };
 constexpr PatternSpec kPatternSpecs[] = {
     {"brightfunc", PatternType::BrightFunc, ModifierKind::Pattern, 0, 1},
@@ -122,10 +141,16 @@ constexpr PatternSpec kPatternSpecs[] = {
     {"mixpict", PatternType::MixPict, ModifierKind::Mixture, 2, 2, 1, 1, true},
 };
 
-/// An anisotropic material's strings, read as a texfunc's: three
-/// expressions, the function file, a transform.
+/// A material's own function (MaterialFunction), its strings read as a
+/// pattern's: an anisotropic material's as a texfunc's (three expressions,
+/// the file, a transform); a BRDF function's as a brightdata's without data
+/// (function, file, transform) or with it (function, data, file,
+/// coordinates, transform).
 constexpr PatternSpec kOrientationSpec = {"orientation", PatternType::Orientation,
                                           ModifierKind::Texture, 0, 3};
+constexpr PatternSpec kBrdfSpec = {"brdf", PatternType::Brdf, ModifierKind::Pattern, 0, 0, 1, 0};
+constexpr PatternSpec kBrdfDataSpec = {"brdfdata", PatternType::Brdf, ModifierKind::Pattern,
+                                       0, -1, 1, 1, false, true};
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
     for (const PatternSpec& spec : kPatternSpecs) {
@@ -325,7 +350,9 @@ private:
     /// variables and rayinit.cal (RAYPATH, else lazyrad's own).
     cal::Program& Functions() {
         if (!functions_) {
-            functions_ = std::make_shared<cal::Program>(cal::Options{}, warn_);
+            cal::Options options;
+            options.channelCount = cal::kBrdfChannelCount;  // $28… for BRDF materials
+            functions_ = std::make_shared<cal::Program>(options, warn_);
             functions_->DefineRayVariables();
             functions_->LoadRayinit(searchPath_);
         }
@@ -353,10 +380,12 @@ private:
         pattern.args = object.rargs;
         pattern.loc = object.loc;
         std::size_t expressions = static_cast<std::size_t>(std::max(spec.expressions, 0));
-        const bool hasData = spec.functions > 0;
+        const bool hasData = spec.dataFiles > 0 || spec.picture;
         const std::size_t names = static_cast<std::size_t>(spec.names);
-        const std::size_t fileAt =
-            names + (hasData ? static_cast<std::size_t>(spec.functions + spec.dataFiles) : expressions);
+        // Names, function names and data files come before the file; so do
+        // the expressions of a modifier without data.
+        const std::size_t fileAt = names + static_cast<std::size_t>(spec.functions + spec.dataFiles) +
+                                   (hasData ? 0 : expressions);
         std::size_t exprAt = names;
         if (!hasData) {
             if (words.size() < fileAt + 1) BadArgs(object);
@@ -405,12 +434,19 @@ private:
         }
         cal::Program& functions = Functions();
         const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
-        for (std::size_t k = 0; k < expressions; ++k) {
-            pattern.values.push_back(functions.CompileExpression(
-                words[exprAt + k], where + ": " + pattern.owner, context));
+        if (!spec.coordinateFunctions) {
+            for (std::size_t k = 0; k < expressions; ++k) {
+                pattern.values.push_back(functions.CompileExpression(
+                    words[exprAt + k], where + ": " + pattern.owner, context));
+            }
         }
-        for (int k = 0; k < spec.functions; ++k) {
-            const std::string& name = words[names + static_cast<std::size_t>(k)];
+        const std::size_t functionCount = static_cast<std::size_t>(spec.functions) +
+                                          (spec.coordinateFunctions ? expressions : 0);
+        for (std::size_t k = 0; k < functionCount; ++k) {
+            const std::size_t at = k < static_cast<std::size_t>(spec.functions)
+                                       ? names + k
+                                       : exprAt + k - static_cast<std::size_t>(spec.functions);
+            const std::string& name = words[at];
             const std::optional<cal::Function> f = functions.FindFunction(name, context);
             if (!f) {
                 ThrowUserError(object.loc, pattern.owner + ": " + PrintableWord(name) +
@@ -458,12 +494,15 @@ private:
         }
         const int modifier = ResolveModifier(object);
         const int nreals = static_cast<int>(object.rargs.size());
-        if (spec->orientation) {
+        if (spec->function == MaterialFunction::Orientation) {
             // Radiance's own words for these (m_aniso.c, getfunc()).
             if (nreals < spec->minReals || nreals > spec->maxReals) {
                 Fail(object, "bad number of real arguments");
             }
             if (object.sargs.size() < 4) Fail(object, "too few string arguments");
+        } else if (spec->function != MaterialFunction::None) {
+            const std::size_t strings = spec->function == MaterialFunction::Brdf ? 2 : 4;
+            if (object.sargs.size() < strings || nreals < spec->minReals) BadArgs(object);
         } else if (static_cast<int>(object.sargs.size()) > spec->maxStrings ||
                    nreals < spec->minReals || nreals > spec->maxReals) {
             BadArgs(object);
@@ -474,13 +513,19 @@ private:
         material.args = object.rargs;
         material.params = MakeMaterialParams(spec->type, material.args);
         material.loc = object.loc;
-        if (spec->orientation) {
+        if (spec->function == MaterialFunction::Orientation) {
             // Radiance stops at the first ray that meets such a surface
             // ("roughness too small"); here when the scene loads.
             const auto& p = std::get<AnisoParams>(material.params);
             if (p.uRoughness <= kFtiny || p.vRoughness <= kFtiny) Fail(object, "roughness too small");
             scene_.patterns.push_back(MakePattern(object, kOrientationSpec));
-            material.orientation = static_cast<int>(scene_.patterns.size()) - 1;
+            material.function = static_cast<int>(scene_.patterns.size()) - 1;
+        } else if (spec->function != MaterialFunction::None) {
+            // The BRDF variables the function may read, before its file.
+            Functions().DefineBrdfVariables();
+            scene_.patterns.push_back(MakePattern(
+                object, spec->function == MaterialFunction::Brdf ? kBrdfSpec : kBrdfDataSpec));
+            material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);
             if (!alternate) {

@@ -34,6 +34,12 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::Plastic2: return "plastic2";
         case MaterialType::Metal2: return "metal2";
         case MaterialType::Trans2: return "trans2";
+        case MaterialType::PlasFunc: return "plasfunc";
+        case MaterialType::MetFunc: return "metfunc";
+        case MaterialType::TransFunc: return "transfunc";
+        case MaterialType::PlasData: return "plasdata";
+        case MaterialType::MetData: return "metdata";
+        case MaterialType::TransData: return "transdata";
     }
     return "unknown";
 }
@@ -75,11 +81,18 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::Plastic2:
         case MaterialType::Metal2: return AnisoParams{color, a[3], a[4], a[5], 0, 0};
         case MaterialType::Trans2: return AnisoParams{color, a[3], a[4], a[5], a[6], a[7]};
+        case MaterialType::PlasFunc:
+        case MaterialType::MetFunc:
+        case MaterialType::PlasData:
+        case MaterialType::MetData: return BrdfParams{color, a[3], 0, 0};
+        case MaterialType::TransFunc:
+        case MaterialType::TransData: return BrdfParams{color, a[3], a[4], a[5]};
     }
     return NormalParams{};
 }
 
 bool IsTransparentType(MaterialType type) {
+    // transfunc and transdata are not: Radiance's -i meters them as opaque.
     return type == MaterialType::Trans || type == MaterialType::Trans2 || type == MaterialType::Glass ||
            type == MaterialType::Dielectric || type == MaterialType::Interface;
 }

@@ -44,9 +44,10 @@ struct SceneObject {
 /// Shading looks materials up in tables indexed by this (shading/materials.cpp).
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
-    Plastic2, Metal2, Trans2
+    Plastic2, Metal2, Trans2,
+    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData
 };
-inline constexpr std::size_t kMaterialTypeCount = 14;
+inline constexpr std::size_t kMaterialTypeCount = 20;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -91,8 +92,18 @@ struct AnisoParams {
     double transmissivity = 0;              // trans2 only, as NormalParams
     double transmittedSpecular = 0;
 };
+/// plasfunc, metfunc, plasdata, metdata (4+ reals) and transfunc, transdata
+/// (6+ reals), m_brdf.c's m_brdf2(): a diffuse part and a directional part
+/// whose BRDF is the material's function; the reals beyond these are the
+/// function's arguments (A5…, A7…).
+struct BrdfParams {
+    Rgb color;
+    double specularity = 0;          // share of the reflection given by the function
+    double transmissivity = 0;       // trans types only
+    double transmittedSpecular = 0;  // share of the transmission given by the function
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
-                                    DielectricParams, AnisoParams>;
+                                    DielectricParams, AnisoParams, BrdfParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -123,10 +134,14 @@ struct Material {
     /// raytexture(m->omod)), indices into Scene::patterns in chain order.
     /// Mixtures on it never reach a material ("conflicting material").
     std::vector<int> patterns;
-    /// plastic2, metal2, trans2: the u direction's function (`ux uy uz
-    /// funcfile [xf]`), an index into Scene::patterns (PatternType::
-    /// Orientation, on no modifier chain); -1 for other types.
-    int orientation = -1;
+    /// The material's own function, an index into Scene::patterns on no
+    /// modifier chain; -1 for types without one. plastic2, metal2, trans2:
+    /// the u direction (`ux uy uz funcfile [xf]`, PatternType::Orientation);
+    /// plasfunc, metfunc, transfunc: the BRDF (`func funcfile [xf]`,
+    /// PatternType::Brdf, the function in data.functions); plasdata,
+    /// metdata, transdata: the same with data (`func datafile funcfile
+    /// x1…xn [xf]`, the coordinates as values).
+    int function = -1;
     FileLoc loc;
 };
 
@@ -134,6 +149,7 @@ enum class PatternType {
     BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, TexData, MixFunc, MixData,
     MixPict,
     Orientation,  // an anisotropic material's u direction: a vector, turned as a texture's
+    Brdf,         // a BRDF material's function, with or without data
 };
 
 /// What a function modifier does to a ray (radiance-functions.md §11.1).
@@ -181,8 +197,9 @@ struct Pattern {
 
 /// Returns Radiance's type name ("plastic", ...).
 const char* MaterialTypeName(MaterialType type);
-/// Radiance's istransp(): materials a coincident opaque surface wins against and
-/// that shadow rays may pass (trans, glass, dielectric, interface).
+/// Radiance's istransp(): materials a coincident opaque surface wins against,
+/// that -i passes, and that shadow rays may pass (trans, trans2, glass,
+/// dielectric, interface; trans2 in fact never passes shadow rays).
 bool IsTransparentType(MaterialType type);
 /// light, illum, glow, spotlight.
 bool IsLightType(MaterialType type);

@@ -33,7 +33,7 @@ AnisoFrame OrientationAt(const ShadingSetup& setup, ThreadState& ts, const Trace
     AnisoFrame f;
     f.uAlpha = p.uRoughness;
     f.vAlpha = p.vRoughness;
-    const Vec3 u = EvaluateOrientation(setup.scene, ts, ray, m.orientation);
+    const Vec3 u = EvaluateOrientation(setup.scene, ts, ray, m.function);
     f.v = Cross(pnorm, u);
     const double length = Length(f.v);
     if (length > 0.0) {

@@ -537,6 +537,12 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeAniso,       // plastic2
         &ShadeAniso,       // metal2
         &ShadeAniso,       // trans2
+        &ShadeBrdf,        // plasfunc
+        &ShadeBrdf,        // metfunc
+        &ShadeBrdf,        // transfunc
+        &ShadeBrdf,        // plasdata
+        &ShadeBrdf,        // metdata
+        &ShadeBrdf,        // transdata
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

@@ -26,6 +26,10 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
 /// plastic2, metal2 and trans2 (m_aniso.c), in aniso.cpp.
 void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// plasfunc, metfunc, transfunc, plasdata, metdata, transdata (m_brdf.c's
+/// m_brdf2()), in brdf.cpp.
+void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
 /// Radiance's isflat() for the surface a ray hit: polygons (mesh triangles
 /// shading with their own material among them) and rings. Flat surfaces
 /// widen highlights by the source's size.

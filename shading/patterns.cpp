@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
 #include "cal/ray_variables.h"
@@ -98,6 +99,32 @@ private:
     const TracedRay& ray_;
     const Transform& f_;
     const double s_;
+};
+
+/// A BRDF material's channels: the ray's, then the BRDF variables (§10.4).
+class BrdfChannels final : public cal::ChannelSource {
+public:
+    BrdfChannels(const TracedRay& ray, const PatternSpace& space, const Vec3& normal,
+                 double rdot, const Rgb& color)
+        : ray_(ray, space), normal_(normal), rdot_(rdot), color_(color) {}
+
+    double Channel(int n) const override {
+        using namespace cal;
+        switch (n) {
+            case kNxP: case kNyP: case kNzP: return normal_[n - kNxP];
+            case kRdotP: return rdot_;
+            case kCrP: return color_.r;
+            case kCgP: return color_.g;
+            case kCbP: return color_.b;
+            default: return ray_.Channel(n);
+        }
+    }
+
+private:
+    PatternChannels ray_;
+    Vec3 normal_;
+    double rdot_;
+    Rgb color_;
 };
 
 /// Radiance's rayshade() from some modifier on: true if a material shaded the ray.
@@ -205,6 +232,43 @@ Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& r
     // texture's displacement, not by an instance's, whose object space the
     // function saw. Only its direction matters.
     return modifier.worldFromPattern.Vector(Vec3(v[0], v[1], v[2]));
+}
+
+std::optional<double> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                   int index, const BrdfInputs& in, const Vec3& ldir,
+                                   double omega) {
+    const cal::Program& functions = *scene.functions;
+    const Pattern& brdf = scene.patterns[static_cast<std::size_t>(index)];
+    const PatternSpace space(ray, brdf);
+    const Transform& f = space.PatternFromRender();
+    const Vec3 normal = f.Vector(in.normal) / f.scale;
+    const Vec3 l = f.Vector(ldir) / f.scale;
+    cal::Context& context = *ts.functionContext;
+    const BrdfChannels channels(ray, space, normal, std::clamp(in.cosine, -1.0, 1.0), in.color);
+    context.SetChannels(&channels);
+    context.SetArguments(brdf.args, brdf.owner);
+    context.NextEvaluation();
+    double value = 0;
+    if (brdf.data.arrays.empty()) {
+        const double args[4] = {l.x, l.y, l.z, omega};
+        value = functions.Call(brdf.data.functions[0], args, context);
+    } else {
+        // *data: the coordinates are functions of the light (as the BRDF),
+        // then the BRDF takes the data's value there before the light.
+        const double light[4] = {l.x, l.y, l.z, omega};
+        const std::size_t dimensions = brdf.data.functions.size() - 1;
+        double point[kMaxDataDimensions] = {};
+        for (std::size_t k = 0; k < dimensions; ++k) {
+            point[k] = functions.Call(brdf.data.functions[k + 1], light, context);
+        }
+        const double args[5] = {
+            brdf.data.arrays[0]->Value(std::span<const double>(point, dimensions)), l.x, l.y,
+            l.z, omega};
+        value = functions.Call(brdf.data.functions[0], args, context);
+    }
+    context.SetChannels(nullptr);
+    if (context.mathError() != cal::MathError::None) return std::nullopt;
+    return value;
 }
 
 bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,

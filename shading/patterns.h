@@ -5,6 +5,7 @@
 // raymixture()).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "shading/shading_state.h"
@@ -26,5 +27,22 @@ bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
 /// function `index` (Scene::patterns) evaluated in its space and turned into
 /// render space, not normalised; zero after a math error.
 Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index);
+
+/// What a BRDF material's function sees of the point besides the ray
+/// (radiance-functions.md §10.4): NxP…, RdotP, CrP….
+struct BrdfInputs {
+    Vec3 normal;     // perturbed unit normal, render space
+    double cosine;   // -D·N' (clamped to [-1, 1] for RdotP)
+    Rgb color;       // material colour times pattern colour
+};
+
+/// BRDF function `index` (Scene::patterns, PatternType::Brdf) for light
+/// arriving from unit `ldir` (render space) with solid angle `omega`:
+/// func(lx, ly, lz, omega) with the direction in the function's space, or
+/// for the *data types func(value at the coordinates, lx, ly, lz, omega).
+/// Nothing after a math error.
+std::optional<double> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                   int index, const BrdfInputs& in, const Vec3& ldir,
+                                   double omega);
 
 }  // namespace rt

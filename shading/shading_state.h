@@ -132,6 +132,7 @@ struct ThreadState {
     std::unordered_set<int> patternWarned;  // patterns whose compute errors were reported
     std::unordered_set<const Surface*> perturbationWarned;  // illegal perturbations reported
     std::unordered_set<const Material*> orientationWarned;  // illegal orientation vectors reported
+    std::unordered_set<const Material*> brdfWarned;  // BRDF functions' compute errors reported
     std::vector<SourceTally> sourceTallies;  // one per ShadingSetup::sources
     RenderStats stats;
     /// The ambient depth, the records made here and not yet handed out, and

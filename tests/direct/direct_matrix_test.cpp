@@ -25,6 +25,11 @@
 //   source, both sides, with patterns, textures and instances, sampled
 //   highlights, -ab 1, -i, errors), answers in tests/data/aniso/expected.txt;
 //   RAYPATH is that folder (its instance's octree).
+// - plasfunc, metfunc, transfunc, plasdata, metdata, transdata
+//   (tests/direct/generate_brdf.py: BRDFs of the light and the BRDF
+//   variables, with transforms, data, patterns, textures, an instance,
+//   -ab 1, -i, errors), answers in tests/data/brdf/expected.txt, RAYPATH
+//   that folder (its function file, data and instance).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -135,6 +140,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("datafiles")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("textures")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("aniso")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("brdf")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -215,7 +221,7 @@ Outcome RunLazyrad(const MatrixRun& r) {
     std::ifstream raysFile(DataDir(r.dataset) + r.rays);
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
-    if (r.dataset == "datafiles" || r.dataset == "aniso") {
+    if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -323,6 +329,7 @@ INSTANTIATE_TEST_SUITE_P(DataFiles, DirectMatrix, ::testing::ValuesIn(Groups("da
 INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("textures")),
                          GroupName);
 INSTANTIATE_TEST_SUITE_P(Aniso, DirectMatrix, ::testing::ValuesIn(Groups("aniso")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Brdf, DirectMatrix, ::testing::ValuesIn(Groups("brdf")), GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -350,6 +357,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("datafiles").size(), 7u);
     EXPECT_GE(Groups("textures").size(), 8u);
     EXPECT_GE(Groups("aniso").size(), 6u);
+    EXPECT_GE(Groups("brdf").size(), 5u);
 }
 
 }  // namespace
