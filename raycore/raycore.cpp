@@ -79,6 +79,7 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Dielectric:
         case MaterialType::Interface:
         case MaterialType::Illum:
+        case MaterialType::BRTDFunc:  // its transmission expressions (m_brdf())
             return true;
         case MaterialType::Mirror:
             // A shadow ray meeting its front is shaded with the alternate.

@@ -49,6 +49,7 @@ enum class MaterialFunction {
     Orientation,  // plastic2, metal2, trans2: `ux uy uz funcfile [xf]`
     Brdf,         // plasfunc, metfunc, transfunc: `func funcfile [xf]`
     BrdfData,     // plasdata, metdata, transdata: `func datafile funcfile x1…xn [xf]`
+    Brtd,         // BRTDfunc: six expressions, three functions, `funcfile [xf]`
 };
 
 struct MaterialSpec {
@@ -83,6 +84,7 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"plasdata", MaterialType::PlasData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
     {"metdata", MaterialType::MetData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
     {"transdata", MaterialType::TransData, 6, kAnyCount, 0, MaterialFunction::BrdfData},
+    {"BRTDfunc", MaterialType::BRTDFunc, 9, kAnyCount, 0, MaterialFunction::Brtd},
 };
 
 const MaterialSpec* FindMaterialSpec(const std::string& type) {
@@ -127,6 +129,8 @@ struct PatternSpec {
     /// The coordinates are names of functions of the light's direction
     /// (plasdata…), kept after the spec's own functions, not expressions.
     bool coordinateFunctions = false;
+    /// A function name starting with '0' means none, the value 0 (BRTDfunc).
+    bool zeroFunctions = false;
 };
 constexpr PatternSpec kPatternSpecs[] = {
     {"brightfunc", PatternType::BrightFunc, ModifierKind::Pattern, 0, 1},
@@ -151,6 +155,8 @@ constexpr PatternSpec kOrientationSpec = {"orientation", PatternType::Orientatio
 constexpr PatternSpec kBrdfSpec = {"brdf", PatternType::Brdf, ModifierKind::Pattern, 0, 0, 1, 0};
 constexpr PatternSpec kBrdfDataSpec = {"brdfdata", PatternType::Brdf, ModifierKind::Pattern,
                                        0, -1, 1, 1, false, true};
+constexpr PatternSpec kBrtdSpec = {"brtd", PatternType::Brdf, ModifierKind::Pattern, 0, 6, 3,
+                                   0, false, false, true};
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
     for (const PatternSpec& spec : kPatternSpecs) {
@@ -443,10 +449,17 @@ private:
         const std::size_t functionCount = static_cast<std::size_t>(spec.functions) +
                                           (spec.coordinateFunctions ? expressions : 0);
         for (std::size_t k = 0; k < functionCount; ++k) {
+            // The function names follow the names (with data) or the
+            // expressions (without); a *data BRDF's coordinates follow them.
             const std::size_t at = k < static_cast<std::size_t>(spec.functions)
-                                       ? names + k
+                                       ? names + (hasData ? 0 : expressions) + k
                                        : exprAt + k - static_cast<std::size_t>(spec.functions);
             const std::string& name = words[at];
+            if (spec.zeroFunctions && name[0] == '0') {
+                pattern.data.functions.push_back(cal::Function{});
+                pattern.data.argCounts.push_back(1);
+                continue;
+            }
             const std::optional<cal::Function> f = functions.FindFunction(name, context);
             if (!f) {
                 ThrowUserError(object.loc, pattern.owner + ": " + PrintableWord(name) +
@@ -501,7 +514,9 @@ private:
             }
             if (object.sargs.size() < 4) Fail(object, "too few string arguments");
         } else if (spec->function != MaterialFunction::None) {
-            const std::size_t strings = spec->function == MaterialFunction::Brdf ? 2 : 4;
+            const std::size_t strings = spec->function == MaterialFunction::Brdf   ? 2
+                                        : spec->function == MaterialFunction::Brtd ? 10
+                                                                                   : 4;
             if (object.sargs.size() < strings || nreals < spec->minReals) BadArgs(object);
         } else if (static_cast<int>(object.sargs.size()) > spec->maxStrings ||
                    nreals < spec->minReals || nreals > spec->maxReals) {
@@ -524,7 +539,9 @@ private:
             // The BRDF variables the function may read, before its file.
             Functions().DefineBrdfVariables();
             scene_.patterns.push_back(MakePattern(
-                object, spec->function == MaterialFunction::Brdf ? kBrdfSpec : kBrdfDataSpec));
+                object, spec->function == MaterialFunction::Brdf   ? kBrdfSpec
+                        : spec->function == MaterialFunction::Brtd ? kBrtdSpec
+                                                                   : kBrdfDataSpec));
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);

@@ -40,6 +40,7 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::PlasData: return "plasdata";
         case MaterialType::MetData: return "metdata";
         case MaterialType::TransData: return "transdata";
+        case MaterialType::BRTDFunc: return "BRTDfunc";
     }
     return "unknown";
 }
@@ -87,6 +88,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::MetData: return BrdfParams{color, a[3], 0, 0};
         case MaterialType::TransFunc:
         case MaterialType::TransData: return BrdfParams{color, a[3], a[4], a[5]};
+        case MaterialType::BRTDFunc:
+            return BrtdParams{color, Rgb(a[3], a[4], a[5]), Rgb(a[6], a[7], a[8])};
     }
     return NormalParams{};
 }

@@ -45,9 +45,9 @@ struct SceneObject {
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
-    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData
+    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc
 };
-inline constexpr std::size_t kMaterialTypeCount = 20;
+inline constexpr std::size_t kMaterialTypeCount = 21;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -102,8 +102,14 @@ struct BrdfParams {
     double transmissivity = 0;       // trans types only
     double transmittedSpecular = 0;  // share of the transmission given by the function
 };
+/// BRTDfunc (9+ reals, m_brdf.c's m_brdf()): diffuse reflectances of the
+/// front and back and a diffuse transmittance; its specular and directional
+/// parts are the material's function (the reals beyond are A10…).
+struct BrtdParams {
+    Rgb frontDiffuse, backDiffuse, diffuseTransmission;
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
-                                    DielectricParams, AnisoParams, BrdfParams>;
+                                    DielectricParams, AnisoParams, BrdfParams, BrtdParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -140,7 +146,10 @@ struct Material {
     /// plasfunc, metfunc, transfunc: the BRDF (`func funcfile [xf]`,
     /// PatternType::Brdf, the function in data.functions); plasdata,
     /// metdata, transdata: the same with data (`func datafile funcfile
-    /// x1…xn [xf]`, the coordinates as values).
+    /// x1…xn [xf]`, the coordinates as values). BRTDfunc: `rrefl grefl
+    /// brefl rtrns gtrns btrns rbrtd gbrtd bbrtd funcfile [xf]`, the six
+    /// expressions as values, the three functions in data.functions (slot
+    /// -1 for a name starting with '0': zero, as in Radiance).
     int function = -1;
     FileLoc loc;
 };

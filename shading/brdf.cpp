@@ -50,8 +50,9 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         if (ldot < 0.0 ? trans <= kFtiny : trans >= 1.0 - kFtiny) return cval;  // wrong side
         cval = (ldot > 0.0 ? rdiff : tdiff) * (std::fabs(ldot) * omega / kPi);
         if (ldot > 0.0 ? rspec <= kFtiny : tspec <= kFtiny) return cval;  // diffuse only
-        const std::optional<double> f =
+        const std::optional<Rgb> brdf =
             EvaluateBrdf(setup.scene, ts, ray, m.function, inputs, ldir, omega);
+        const std::optional<double> f = brdf ? std::optional<double>(brdf->r) : std::nullopt;
         if (!f) {
             // Radiance warns at every call; once per material here.
             if (ts.brdfWarned.insert(&m).second) {
@@ -87,6 +88,128 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         ray.FlipSurface();
     }
     tree.direct().Add(ts, ray, coefficient);
+}
+
+}  // namespace rt
+
+namespace rt {
+
+void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    // BRTDfunc (m_brdf()): two-sided by its own arguments, -bv aside. The
+    // transmission it gives as expressions reaches shadow rays too.
+    const ShadingSetup& setup = tree.setup();
+    const BrtdParams& p = std::get<BrtdParams>(m.params);
+    const bool front = ray.rod > 0.0;
+    Rgb rdiff = front ? p.frontDiffuse : p.backDiffuse;
+    Rgb tdiff = p.diffuseTransmission;
+    const bool textured = ray.Textured();
+    Vec3 pnorm = ray.ron;
+    double pdot = ray.rod;
+    if (textured) pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
+    if (!front) {
+        // Oriented toward the ray; Radiance turns the ray's perturbation too.
+        pdot = -pdot;
+        pnorm = -pnorm;
+        ray.pert = -ray.pert;
+    }
+    const Rgb mcolor = ray.pcol;  // CrP…: the pattern colour alone
+    rdiff *= mcolor;
+    tdiff *= mcolor;
+    const bool hasRefl = Bright(rdiff) > kFtiny;
+    const bool hasTrans = Bright(tdiff) > kFtiny;
+    const BrdfInputs inputs{pnorm, pdot, mcolor};
+    const auto warnCompute = [&] {
+        if (ts.brdfWarned.insert(&m).second) {
+            ts.Warn("compute error for BRTDfunc \"" + m.name + "\"");
+        }
+    };
+
+    // Specular transmission straight through (bent by a texture, except
+    // for shadow and ambient rays, which must reach what they aim at).
+    double transTest = 0, transDistance = 0;
+    if (const auto coef = EvaluateBrdfColour(setup.scene, ts, ray, m.function, inputs, 3); !coef) {
+        warnCompute();
+    } else {
+        TracedRay child;
+        if (tree.StartChild(ts, child, ray, kTransRay, &*coef)) {
+            child.dir = ray.dir;
+            if (textured && !(ray.crtype & (kShadowRay | kAmbientRay))) {
+                const Vec3 bent = ray.dir - ray.pert;
+                if (LengthSquared(bent) > 0.0) {
+                    child.dir = Normalize(bent);
+                } else if (ray.surface >= 0 &&
+                           ts.perturbationWarned
+                               .insert(&setup.scene.HitSurface(ray.instance, ray.surface))
+                               .second) {
+                    ts.Warn("illegal perturbation for BRTDfunc \"" + m.name + "\"");
+                }
+            }
+            tree.Trace(ts, child);
+            const Rgb c = child.rcol * child.rcoef;
+            ray.rcol += c;
+            if (!textured) {
+                transTest = 2.0 * Bright(c);
+                transDistance = ray.rot + child.EffectiveDistance();
+            }
+        }
+    }
+    if (ray.crtype & kShadowRay) return;
+
+    // Specular reflection in the (perturbed) mirror direction.
+    if (const auto coef = EvaluateBrdfColour(setup.scene, ts, ray, m.function, inputs, 0); !coef) {
+        warnCompute();
+    } else {
+        TracedRay child;
+        if (tree.StartChild(ts, child, ray, kReflectedRay, &*coef)) {
+            child.dir = Normalize(ray.dir + pnorm * (2.0 * pdot));
+            tree.Trace(ts, child);
+            const Rgb c = child.rcol * child.rcoef;
+            ray.mcol = c;
+            ray.rcol += c;
+            ray.rmt = ray.rot;
+            if (IsFlatHit(setup.scene, ray) && (!textured || (ray.crtype & kAmbientRay))) {
+                ray.rmt += child.EffectiveDistance();
+            }
+        }
+    }
+
+    // Direct light (dirbrdf() with both specular shares 1): the diffuse part
+    // of the side the light is on, plus the directional functions.
+    auto coefficient = [&](const Vec3& ldir, double omega) {
+        Rgb cval;
+        const double ldot = Dot(pnorm, ldir);
+        if (ldot <= kFtiny && ldot >= -kFtiny) return cval;  // too close to grazing
+        cval = (ldot > 0.0 ? rdiff : tdiff) * (std::fabs(ldot) * omega / kPi);
+        const std::optional<Rgb> f =
+            EvaluateBrdf(setup.scene, ts, ray, m.function, inputs, ldir, omega);
+        if (!f) {
+            warnCompute();
+            return cval;
+        }
+        if (Bright(*f) <= kFtiny) return cval;
+        return cval + *f * (std::fabs(ldot) * omega);
+    };
+    if (hasRefl) {
+        if (!front) ray.FlipSurface();
+        const auto other = [&]() {
+            TracedRay copy = ray;
+            tree.direct().Add(ts, copy, coefficient);
+            return Bright(copy.rcol);
+        };
+        const OtherRadianceRef otherRef(other);
+        ray.rcol += tree.indirect().Ambient(ts, rdiff, ray, pnorm, &otherRef);
+        if (!front) ray.FlipSurface();
+    }
+    if (hasTrans) {
+        if (front) ray.FlipSurface();
+        ray.rcol += tree.indirect().Ambient(ts, tdiff, ray, -pnorm);
+        if (front) ray.FlipSurface();
+    }
+    const Pattern& functions = setup.scene.patterns[static_cast<std::size_t>(m.function)];
+    if (hasRefl || hasTrans || functions.data.functions[0].slot >= 0) {
+        tree.direct().Add(ts, ray, coefficient);
+    }
+    if (transTest > Bright(ray.mcol)) ray.rxt = transDistance;
 }
 
 }  // namespace rt

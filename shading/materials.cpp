@@ -543,6 +543,7 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeBrdf,        // plasdata
         &ShadeBrdf,        // metdata
         &ShadeBrdf,        // transdata
+        &ShadeBrtd,        // BRTDfunc
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

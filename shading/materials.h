@@ -29,6 +29,8 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
 /// plasfunc, metfunc, transfunc, plasdata, metdata, transdata (m_brdf.c's
 /// m_brdf2()), in brdf.cpp.
 void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+/// BRTDfunc (m_brdf.c's m_brdf()), in brdf.cpp.
+void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
 /// Radiance's isflat() for the surface a ray hit: polygons (mesh triangles
 /// shading with their own material among them) and rings. Flat surfaces

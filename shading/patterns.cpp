@@ -234,28 +234,61 @@ Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& r
     return modifier.worldFromPattern.Vector(Vec3(v[0], v[1], v[2]));
 }
 
-std::optional<double> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
-                                   int index, const BrdfInputs& in, const Vec3& ldir,
-                                   double omega) {
+namespace {
+
+/// Sets `context` up for BRDF function `brdf` at this ray (setbrdfunc()).
+class BrdfEvaluation {
+public:
+    BrdfEvaluation(cal::Context& context, const TracedRay& ray, const Pattern& brdf,
+                   const BrdfInputs& in)
+        : context_(context),
+          space_(ray, brdf),
+          channels_(ray, space_, space_.PatternFromRender().Vector(in.normal) /
+                                     space_.PatternFromRender().scale,
+                    std::clamp(in.cosine, -1.0, 1.0), in.color) {
+        context_.SetChannels(&channels_);
+        context_.SetArguments(brdf.args, brdf.owner);
+        context_.NextEvaluation();
+    }
+    ~BrdfEvaluation() { context_.SetChannels(nullptr); }
+    BrdfEvaluation(const BrdfEvaluation&) = delete;
+    BrdfEvaluation& operator=(const BrdfEvaluation&) = delete;
+
+    /// A direction in the function's space, as Dx… are.
+    Vec3 Direction(const Vec3& v) const {
+        const Transform& f = space_.PatternFromRender();
+        return f.Vector(v) / f.scale;
+    }
+
+private:
+    cal::Context& context_;
+    PatternSpace space_;
+    BrdfChannels channels_;
+};
+
+}  // namespace
+
+std::optional<Rgb> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                int index, const BrdfInputs& in, const Vec3& ldir,
+                                double omega) {
     const cal::Program& functions = *scene.functions;
     const Pattern& brdf = scene.patterns[static_cast<std::size_t>(index)];
-    const PatternSpace space(ray, brdf);
-    const Transform& f = space.PatternFromRender();
-    const Vec3 normal = f.Vector(in.normal) / f.scale;
-    const Vec3 l = f.Vector(ldir) / f.scale;
     cal::Context& context = *ts.functionContext;
-    const BrdfChannels channels(ray, space, normal, std::clamp(in.cosine, -1.0, 1.0), in.color);
-    context.SetChannels(&channels);
-    context.SetArguments(brdf.args, brdf.owner);
-    context.NextEvaluation();
-    double value = 0;
-    if (brdf.data.arrays.empty()) {
-        const double args[4] = {l.x, l.y, l.z, omega};
-        value = functions.Call(brdf.data.functions[0], args, context);
+    const BrdfEvaluation evaluation(context, ray, brdf, in);
+    const Vec3 l = evaluation.Direction(ldir);
+    const double light[4] = {l.x, l.y, l.z, omega};
+    Rgb value;
+    if (!brdf.values.empty() && brdf.data.arrays.empty()) {
+        // BRTDfunc: a function per channel, none (a name from '0') for 0.
+        for (int c = 0; c < 3; ++c) {
+            const cal::Function f = brdf.data.functions[static_cast<std::size_t>(c)];
+            value[c] = f.slot < 0 ? 0.0 : functions.Call(f, light, context);
+        }
+    } else if (brdf.data.arrays.empty()) {
+        value = Rgb::Grey(functions.Call(brdf.data.functions[0], light, context));
     } else {
         // *data: the coordinates are functions of the light (as the BRDF),
         // then the BRDF takes the data's value there before the light.
-        const double light[4] = {l.x, l.y, l.z, omega};
         const std::size_t dimensions = brdf.data.functions.size() - 1;
         double point[kMaxDataDimensions] = {};
         for (std::size_t k = 0; k < dimensions; ++k) {
@@ -264,9 +297,22 @@ std::optional<double> EvaluateBrdf(const Scene& scene, ThreadState& ts, const Tr
         const double args[5] = {
             brdf.data.arrays[0]->Value(std::span<const double>(point, dimensions)), l.x, l.y,
             l.z, omega};
-        value = functions.Call(brdf.data.functions[0], args, context);
+        value = Rgb::Grey(functions.Call(brdf.data.functions[0], args, context));
     }
-    context.SetChannels(nullptr);
+    if (context.mathError() != cal::MathError::None) return std::nullopt;
+    return value;
+}
+
+std::optional<Rgb> EvaluateBrdfColour(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                      int index, const BrdfInputs& in, int first) {
+    const cal::Program& functions = *scene.functions;
+    const Pattern& brdf = scene.patterns[static_cast<std::size_t>(index)];
+    cal::Context& context = *ts.functionContext;
+    const BrdfEvaluation evaluation(context, ray, brdf, in);
+    Rgb value;
+    for (int c = 0; c < 3; ++c) {
+        value[c] = functions.Evaluate(brdf.values[static_cast<std::size_t>(first + c)], context);
+    }
     if (context.mathError() != cal::MathError::None) return std::nullopt;
     return value;
 }

@@ -38,11 +38,17 @@ struct BrdfInputs {
 
 /// BRDF function `index` (Scene::patterns, PatternType::Brdf) for light
 /// arriving from unit `ldir` (render space) with solid angle `omega`:
-/// func(lx, ly, lz, omega) with the direction in the function's space, or
-/// for the *data types func(value at the coordinates, lx, ly, lz, omega).
-/// Nothing after a math error.
-std::optional<double> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
-                                   int index, const BrdfInputs& in, const Vec3& ldir,
-                                   double omega);
+/// func(lx, ly, lz, omega) with the direction in the function's space (grey),
+/// for the *data types func(value at the coordinates, lx, ly, lz, omega),
+/// for BRTDfunc one function per channel. Nothing after a math error.
+std::optional<Rgb> EvaluateBrdf(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                int index, const BrdfInputs& in, const Vec3& ldir,
+                                double omega);
+
+/// BRTDfunc's expressions `first` … `first + 2` (0: reflection, 3:
+/// transmission) at this ray, with the BRDF variables set. Nothing after a
+/// math error.
+std::optional<Rgb> EvaluateBrdfColour(const Scene& scene, ThreadState& ts, const TracedRay& ray,
+                                      int index, const BrdfInputs& in, int first);
 
 }  // namespace rt

@@ -25,7 +25,9 @@ from matrix_data import write_expected
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 OUT = os.path.join(ROOT, "tests", "data", "brdf")
-DET = "-u- -dj 0 -dt 0"
+# Without Russian roulette (-lr 8 stops at a depth, -lw at a weight), so
+# that BRTDfunc's chains of specular rays end at the same place in both.
+DET = "-u- -dj 0 -dt 0 -lr 8 -lw 1e-4"
 
 LAMPS = {
     "sphere": "void light lamp 0 0 3 100 100 100\nlamp sphere bulb 0 0 4 1 1 4 .5\n",
@@ -53,6 +55,12 @@ dv(v,lx,ly,lz,om) = v*(1+0.3*lz+0.2*lx-0.1*ly+om);
 cx(lx,ly,lz,om) = 3*lx;
 cy(lx,ly,lz,om) = 3*ly + 0.1*Py;
 cz(lx,ly,lz,om) = Acos(abs(lz));
+{ BRTDfunc: a glazing with a Fresnel-like specular part that differs by side }
+fr = exp(-5.85*abs(Rdot)) - exp(-5.85);
+brefl = A10 + fr*(1-A10) + 0.05*if(Rdot, 0, 1);
+btrans = arg(11)*(1-fr)*(1+0.1*NzP*NzP);
+bd(lx,ly,lz) = arg(12)*abs(lz)*(1+0.2*CrP);
+bd2(lx,ly,lz,om) = arg(12)*(0.5+lx*lx) + om;
 """
 # Two-dimensional table over (-5..5) x (-5..5), and one over the angle.
 DATA2 = "2\n-5 5 3\n-5 5 3\n1 2 1.5\n.5 1 2\n3 1 1\n"
@@ -70,6 +78,12 @@ MATERIALS = {
     "metdata": "metdata m 5 dv table2.dat brdf.cal cy cx 0 4 .5 .6 .7 .6",
     "transdata": "transdata m 4 dv angle.dat brdf.cal cz 0 6 .5 .6 .7 .1 .5 .6",
     "transdata_xf": "transdata m 7 dv table2.dat brdf.cal cx cy -rz 90 0 6 .5 .6 .7 .1 .5 .6",
+    "brtd": "BRTDfunc m 10 brefl brefl brefl btrans btrans*.9 btrans*.8 0 0 0 brdf.cal "
+            "0 12 .2 .2 .2 .3 .3 .3 .1 .1 .1 .05 .8 .5",
+    "brtd_dir": "BRTDfunc m 10 brefl brefl*.9 brefl btrans btrans btrans bd bd bd2 brdf.cal "
+                "0 12 .1 .15 .2 .05 .05 .05 .2 .2 .2 .08 .5 .4",
+    "brtd_xf": "BRTDfunc m 14 brefl brefl brefl btrans btrans btrans 0 bd 0 brdf.cal "
+               "-rx 30 -s 2 0 12 .1 .1 .1 0 0 0 0 0 0 .1 .6 .8",
 }
 
 
@@ -102,14 +116,15 @@ def main():
     # types, a lamp below), seen from both sides.
     for kind in MATERIALS:
         for lamp, lamptext in LAMPS.items():
-            if lamp != "sphere" and kind not in ("plasfunc", "metfunc", "transfunc", "plasdata"):
+            if lamp != "sphere" and kind not in ("plasfunc", "metfunc", "transfunc", "plasdata",
+                                                 "brtd_dir"):
                 continue
             name = f"{kind}_{lamp}"
             write(f"plane_{name}.rad", lamptext + BELOW + material(kind) + "m " + PLANE)
             runs.append(("plane", name, [f"plane_{name}.rad"], "both.rays", 1, DET, "exact"))
 
     # 2. Balls (not flat), -bv-, patterns, textures, an instance.
-    for kind in ("plasfunc", "metfunc", "transfunc", "metdata"):
+    for kind in ("plasfunc", "metfunc", "transfunc", "metdata", "brtd_dir"):
         write(f"ball_{kind}.rad", LAMPS["sphere"] + material(kind) + "m " + BALL)
         runs.append(("shape", f"ball_{kind}", [f"ball_{kind}.rad"], "ball.rays", 1, DET, "exact"))
         runs.append(("shape", f"backface_{kind}", [f"plane_{kind}_sphere.rad"], "up.rays", 1,
@@ -119,7 +134,7 @@ def main():
         "texture": "void texfunc c 4 .2*sin(2*Px) .15*cos(Py) 0 . 0 0\n",
     }
     for chain, text in chains.items():
-        for kind in ("plasfunc", "metfunc", "transfunc", "plasdata"):
+        for kind in ("plasfunc", "metfunc", "transfunc", "plasdata", "brtd_dir"):
             name = f"{chain}_{kind}"
             write(f"chain_{name}.rad", LAMPS["sphere"] + BELOW + text + material(kind, "c") +
                   "m " + PLANE)
@@ -131,6 +146,20 @@ def main():
     write("instance.rad", LAMPS["sphere"] +
           "void instance i1 9 inst_obj.oct -rz 60 -t .5 .2 0 -s 1.5 0 0\n")
     runs.append(("chain", "instance", ["instance.rad"], "down.rays", 1, DET, "exact"))
+    # Two glazings over a floor under the lamp and a sky that colours every
+    # direction: transmitted, reflected and shadow rays through both.
+    sky = ("void colorfunc skypat 4 1.5+Dx 1.5+Dy 1.5+Dz . 0 0\n"
+           "skypat glow skyglow 0 0 4 1 1 1 0\nskyglow source sky 0 0 4 0 0 1 360\n")
+    write("glazings.rad", LAMPS["sphere"] + sky + material("brtd", "void").replace(" m ", " g1 ") +
+          "g1 " + PLANE + material("brtd_dir").replace(" m ", " g2 ") +
+          "g2 polygon p2 0 0 12 -10 -10 -2  10 -10 -2  10 10 -2  -10 10 -2\n"
+          "void plastic flr 0 0 5 .5 .5 .5 0 0\n"
+          "flr polygon fl 0 0 12 -10 -10 -4  10 -10 -4  10 10 -4  -10 10 -4\n")
+    write("glazings.rays", open(os.path.join(OUT, "both.rays")).read() +
+          "0 0 -3 0 0 1\n2 1 -3 0.4 0.2 -1\n")
+    for opts in ("", " -I"):
+        runs.append(("chain", "glazings" + opts.replace(" -", "_"), ["glazings.rad"],
+                     "glazings.rays", 1, DET + opts, "exact"))
 
     # 3. -ab 1 without a cache, and -i (transfunc is metered, not passed).
     faces = {"floor": "-2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1",
@@ -142,15 +171,16 @@ def main():
     box = ("void plastic wall 0 0 5 .5 .5 .5 0 0\n" +
            "".join(f"wall polygon {n} 0 0 12 {v}\n" for n, v in faces.items()) +
            "void light l 0 0 3 20 20 20\nl sphere bulb 0 0 4 0 0 1.5 .2\n")
-    for kind in ("metfunc", "transfunc"):
+    for kind in ("metfunc", "transfunc", "brtd_dir"):
         write(f"ab1_{kind}.rad", box + material(kind) +
               "m polygon top 0 0 12 -1 -1 -0.5  1 -1 -0.5  1 1 -0.5  -1 1 -0.5\n")
         runs.append(("ab1", kind, [f"ab1_{kind}.rad"], "ab1.rays", 64,
                      "-u+ -ab 1 -aa 0 -ad 256 -as 0", "noise"))
     write("ab1.rays", "0.3 0.2 1 0 0 -1\n-0.5 0.4 1 0.2 0 -1\n")
     write("irr.rays", "0.3 0.2 1 0 0 -1\n-1.5 0.4 1 0 0 -1\n")
-    runs.append(("ab1", "irradiance_transfunc", ["ab1_transfunc.rad"], "irr.rays", 1,
-                 DET + " -i -ab 0", "exact"))
+    for kind in ("transfunc", "brtd_dir"):
+        runs.append(("ab1", f"irradiance_{kind}", [f"ab1_{kind}.rad"], "irr.rays", 1,
+                     DET + " -i -ab 0", "exact"))
 
     # 4. Errors and compute errors.
     errors = {
@@ -159,6 +189,10 @@ def main():
         "few_strings": "void metfunc m 1 lobe 0 4 .5 .5 .5 .5\n",
         "data_strings": "void plasdata m 3 dv table2.dat brdf.cal 0 4 .5 .5 .5 .5\n",
         "compute": "void plasfunc m 2 bad brdf.cal 0 4 .5 .5 .5 .5\n",
+        "brtd_strings": "void BRTDfunc m 9 .1 .1 .1 .5 .5 .5 0 0 0 0 9 0 0 0 0 0 0 0 0 0\n",
+        "brtd_reals": "void BRTDfunc m 10 .1 .1 .1 .5 .5 .5 0 0 0 . 0 8 0 0 0 0 0 0 0 0\n",
+        "brtd_compute": "void BRTDfunc m 10 brefl brefl brefl sqrt(Px)*.3 .5 .5 0 0 0 brdf.cal "
+                        "0 12 .1 .1 .1 0 0 0 0 0 0 .1 .6 .8\n",
     }
     for name, text in errors.items():
         write(f"error_{name}.rad", LAMPS["sphere"] + text + "m " + PLANE)

@@ -75,8 +75,10 @@ TEST(BuildScene, WrongArgumentCountsNameTheMaterial) {
 }
 
 TEST(BuildScene, UnsupportedTypesAreRejected) {
-    EXPECT_EQ(BuildError("void BRTDfunc b 10 0 0 0 0 0 0 0 0 0 . 0 9 0 0 0 0 0 0 0 0 0\n"),
-              "t.rad:1: unsupported material type 'BRTDfunc'");
+    EXPECT_EQ(BuildError("void BSDF b 6 0 blinds.xml 0 0 1 . 0 0\n"),
+              "t.rad:1: unsupported material type 'BSDF'");
+    EXPECT_EQ(BuildError("void ashik2 a 4 1 0 0 . 0 8 .5 .5 .5 .1 .1 .1 10 10\n"),
+              "t.rad:1: unsupported material type 'ashik2'");
     EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
               "t.rad:1: unsupported material type 'antimatter'");
     // The text types need Radiance's font files.
