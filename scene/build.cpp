@@ -968,6 +968,7 @@ private:
     const WarningSink& warn_;
     const SceneLoadOptions& options_;
     cal::SearchPath searchPath_ = cal::SearchPath::FromEnvironment();
+    Scene scene_;  // before surfaces_, which points into it from the start
     /// Where surfaces and placements go: the scene's, or those of the
     /// prototype being read.
     std::vector<Surface>* surfaces_ = &scene_.surfaces;
@@ -980,7 +981,6 @@ private:
     std::vector<std::vector<Placement>> prototypePlacements_;
     DataFileCache dataFiles_{searchPath_};
     std::shared_ptr<cal::Program> functions_;
-    Scene scene_;
     std::vector<ModifierDef> defs_;
     std::unordered_map<std::string, int> byName_;
 };
