@@ -214,26 +214,12 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         }
         return cval;
     };
-    // Indirect light, from this side and (translucent) from the other.
-    if (rdiff > kFtiny) {
-        Rgb a = mcolor * rdiff;
-        if (reflBelowThreshold) a += scolor;
-        const auto other = [&]() {
-            TracedRay copy = ray;
-            tree.direct().Add(ts, copy, coefficient);
-            return Bright(copy.rcol);
-        };
-        const OtherRadianceRef otherRef(other);
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm, &otherRef);
-    }
-    if (tdiff > kFtiny) {
-        const Rgb a = mcolor * (transBelowThreshold ? trans : tdiff);
-        ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, -pnorm);
-        ray.FlipSurface();
-    }
-    // Direct light, after the indirect term (Radiance's order).
-    tree.direct().Add(ts, ray, coefficient);
+    // Indirect light, from this side and (translucent) from the other, then
+    // the direct light.
+    const Rgb front = mcolor * rdiff + (reflBelowThreshold ? scolor : Rgb());
+    const Rgb back = mcolor * (transBelowThreshold ? trans : tdiff);
+    AddIndirectAndDirect(tree, ts, ray, pnorm, rdiff > kFtiny ? &front : nullptr,
+                         tdiff > kFtiny ? &back : nullptr, coefficient);
 }
 
 }  // namespace rt

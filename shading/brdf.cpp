@@ -72,22 +72,11 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         return cval;
     };
     // Indirect light, from this side (for the whole reflection) and from the
-    // other (for the whole transmission).
-    if (trans < 1.0 - kFtiny) {
-        const auto other = [&]() {
-            TracedRay copy = ray;
-            tree.direct().Add(ts, copy, coefficient);
-            return Bright(copy.rcol);
-        };
-        const OtherRadianceRef otherRef(other);
-        ray.rcol += tree.indirect().Ambient(ts, mcolor * (1.0 - trans), ray, pnorm, &otherRef);
-    }
-    if (trans > kFtiny) {
-        ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, mcolor * trans, ray, -pnorm);
-        ray.FlipSurface();
-    }
-    tree.direct().Add(ts, ray, coefficient);
+    // other (for the whole transmission), then the direct light.
+    const Rgb front = mcolor * (1.0 - trans);
+    const Rgb back = mcolor * trans;
+    AddIndirectAndDirect(tree, ts, ray, pnorm, trans < 1.0 - kFtiny ? &front : nullptr,
+                         trans > kFtiny ? &back : nullptr, coefficient);
 }
 
 }  // namespace rt
@@ -189,25 +178,17 @@ void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         if (Bright(*f) <= kFtiny) return cval;
         return cval + *f * (std::fabs(ldot) * omega);
     };
-    if (hasRefl) {
-        if (!front) ray.FlipSurface();
-        const auto other = [&]() {
-            TracedRay copy = ray;
-            tree.direct().Add(ts, copy, coefficient);
-            return Bright(copy.rcol);
-        };
-        const OtherRadianceRef otherRef(other);
-        ray.rcol += tree.indirect().Ambient(ts, rdiff, ray, pnorm, &otherRef);
-        if (!front) ray.FlipSurface();
-    }
-    if (hasTrans) {
-        if (front) ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, tdiff, ray, -pnorm);
-        if (front) ray.FlipSurface();
-    }
+    // The indirect light is gathered facing the ray, whichever side it hit.
+    if (!front) ray.FlipSurface();
     const Pattern& functions = setup.scene.patterns[static_cast<std::size_t>(m.function)];
-    if (hasRefl || hasTrans || functions.data.functions[0].slot >= 0) {
-        tree.direct().Add(ts, ray, coefficient);
+    AddIndirectAndDirect(tree, ts, ray, pnorm, hasRefl ? &rdiff : nullptr,
+                         hasTrans ? &tdiff : nullptr, coefficient,
+                         hasRefl || hasTrans || functions.data.functions[0].slot >= 0);
+    if (!front) {
+        // The ray keeps its surface's orientation, and Radiance's negated
+        // perturbation.
+        ray.FlipSurface();
+        ray.pert = -ray.pert;
     }
     if (transTest > Bright(ray.mcol)) ray.rxt = transDistance;
 }

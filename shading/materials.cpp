@@ -260,10 +260,18 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         }
         return cval;
     };
-    // Indirect light, from this side and (translucent) from the other.
-    if (rdiff > kFtiny) {
-        Rgb a = mcolor * rdiff;
-        if (reflBelowThreshold) a += scolor;
+    // Indirect light, from this side and (translucent) from the other, then
+    // the direct light.
+    const Rgb front = mcolor * rdiff + (reflBelowThreshold ? scolor : Rgb());
+    const Rgb back = mcolor * tdiff + (transBelowThreshold ? mcolor * tspec : Rgb());
+    AddIndirectAndDirect(tree, ts, ray, pnorm, rdiff > kFtiny ? &front : nullptr,
+                         tdiff > kFtiny ? &back : nullptr, coefficient);
+}
+
+void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Vec3& normal,
+                          const Rgb* front, const Rgb* back,
+                          FunctionRef<Rgb(const Vec3&, double)> coefficient, bool addDirect) {
+    if (front) {
         // What the point sends its viewer besides the ambient term: what the
         // ray has so far and the direct light, computed on a copy, only when
         // a deeper record is about to be made (the direct light is added
@@ -274,20 +282,16 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
             return Bright(copy.rcol);
         };
         const OtherRadianceRef otherRef(other);
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, pnorm, &otherRef);
+        ray.rcol += tree.indirect().Ambient(ts, *front, ray, normal, &otherRef);
     }
-    if (tdiff > kFtiny) {
+    if (back) {
         // The back side's deeper records are sampled in full: the direct
-        // light computed above belongs to the front side's viewer.
-        Rgb a = mcolor * tdiff;
-        if (transBelowThreshold) a += mcolor * tspec;
+        // light belongs to the front side's viewer.
         ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, a, ray, textured ? -pnorm : ray.ron);
+        ray.rcol += tree.indirect().Ambient(ts, *back, ray, -normal);
         ray.FlipSurface();
     }
-
-    // Direct light, after the indirect term (Radiance's order).
-    tree.direct().Add(ts, ray, coefficient);
+    if (addDirect) tree.direct().Add(ts, ray, coefficient);
 }
 
 namespace {

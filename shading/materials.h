@@ -7,6 +7,7 @@
 // DirectLight and IndirectLight for the light at its point.
 #pragma once
 
+#include "core/function_ref.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
 #include "shading/shading_state.h"
@@ -22,6 +23,16 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
 
 /// plastic, metal and trans (normal.c); also the -i/-I Lambertian meter.
 void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
+/// What every diffusely reflecting material ends with, in Radiance's order:
+/// the ambient term on the ray's side with coefficient `*front` about
+/// `normal`, on the other side with `*back` (the surface turned around for
+/// it), then, if `addDirect`, the direct light through `coefficient`. A null
+/// coefficient skips its term.
+void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Vec3& normal,
+                          const Rgb* front, const Rgb* back,
+                          FunctionRef<Rgb(const Vec3&, double)> coefficient,
+                          bool addDirect = true);
 
 /// plastic2, metal2 and trans2 (m_aniso.c), in aniso.cpp.
 void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);

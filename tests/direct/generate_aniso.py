@@ -21,7 +21,7 @@ import sys
 import tempfile
 
 from generate_patterns import BIN, ENV, radiance
-from matrix_data import write_expected
+from matrix_data import LIT_BOX, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -144,15 +144,7 @@ def main():
 
     # 5. -ab 1 without a cache, and -I through trans2 (passed straight, as
     # Radiance's irradiance calculation passes transparent materials).
-    faces = {"floor": "-2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1",
-             "ceiling": "-2 -2 2  -2 2 2  2 2 2  2 -2 2",
-             "south": "-2 -2 -1  -2 -2 2  2 -2 2  2 -2 -1",
-             "north": "-2 2 -1  2 2 -1  2 2 2  -2 2 2",
-             "west": "-2 -2 -1  -2 2 -1  -2 2 2  -2 -2 2",
-             "east": "2 -2 -1  2 -2 2  2 2 2  2 2 -1"}
-    box = ("void plastic wall 0 0 5 .5 .5 .5 0 0\n" +
-           "".join(f"wall polygon {n} 0 0 12 {v}\n" for n, v in faces.items()) +
-           "void light l 0 0 3 20 20 20\nl sphere bulb 0 0 4 0 0 1.5 .2\n")
+    box = LIT_BOX
     write("ab1_metal2.rad", box + material("metal2", "position") +
           "m polygon top 0 0 12 -1 -1 -0.5  1 -1 -0.5  1 1 -0.5  -1 1 -0.5\n")
     write("ab1.rays", "0.3 0.2 1 0 0 -1\n-0.5 0.4 1 0.2 0 -1\n")
@@ -176,23 +168,10 @@ def main():
         write(f"error_{name}.rad", LAMPS["sphere"] + text + "m " + PLANE)
         runs.append(("anisoerror", name, [f"error_{name}.rad"], "down.rays", 1, "-ab 0", "exact"))
 
-    blocks = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for group, name, files, rays, repeat, options, check in runs:
-            lazy_repeat = 16 if check == "noise" else repeat
-            status, err, rows, sems = radiance(files, rays, repeat, options, tmp, out=OUT)
-            blocks.append(dict(group=group, name=name, files=files, rays=rays,
-                               repeat=lazy_repeat, options=options, check=check,
-                               status=status, err=err, rows=rows,
-                               sems=sems if check == "noise" else [],
-                               notes=[f"Radiance's mean over {repeat} repeats"]
-                               if check == "noise" else []))
-    write_expected(os.path.join(OUT, "expected.txt"),
+    run_and_write(runs, radiance, OUT,
                    "# Real Radiance 5.4a's answers for the anisotropic material cases of\n"
                    "# tests/direct/direct_matrix_test.cpp, written by\n"
-                   "# tests/direct/generate_aniso.py (format as in generate.py).\n",
-                   blocks)
-    print(f"{len(blocks)} runs written to {OUT}", file=sys.stderr)
+                   "# tests/direct/generate_aniso.py (format as in generate.py).\n")
 
 
 if __name__ == "__main__":

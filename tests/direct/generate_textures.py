@@ -18,7 +18,7 @@ import sys
 import tempfile
 
 from generate_patterns import radiance
-from matrix_data import write_expected
+from matrix_data import LIT_BOX, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -209,16 +209,7 @@ def main():
 
     # 5. -ab 1 (no cache): a textured floor and a mixed floor in a closed box
     # under a lamp; the mean of repeats against Radiance's.
-    # The room x, y in [-2, 2], z in [-1, 2], faces turned inwards.
-    faces = {"floor": "-2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1",
-             "ceiling": "-2 -2 2  -2 2 2  2 2 2  2 -2 2",
-             "south": "-2 -2 -1  -2 -2 2  2 -2 2  2 -2 -1",
-             "north": "-2 2 -1  2 2 -1  2 2 2  -2 2 2",
-             "west": "-2 -2 -1  -2 2 -1  -2 2 2  -2 -2 2",
-             "east": "2 -2 -1  2 -2 2  2 2 2  2 2 -1"}
-    box = ("void plastic wall 0 0 5 .5 .5 .5 0 0\n" +
-           "".join(f"wall polygon {n} 0 0 12 {v}\n" for n, v in faces.items()) +
-           "void light l 0 0 3 20 20 20\nl sphere bulb 0 0 4 0 0 1.5 .2\n")
+    box = LIT_BOX
     write("ab1_texture.rad", box + "void texfunc t 4 .3*sin(3*Px) .3*cos(3*Py) 0 . 0 0\n"
           "t plastic m 0 0 5 .6 .5 .4 .05 .08\n"
           "m polygon top 0 0 12 -1 -1 -0.5  1 -1 -0.5  1 1 -0.5  -1 1 -0.5\n")
@@ -245,23 +236,10 @@ def main():
               text + f"{surface} {PLANE}\n")
         runs.append(("texerror", name, [f"error_{name}.rad"], "down.rays", 1, "-ab 0", "exact"))
 
-    blocks = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for group, name, files, rays, repeat, options, check in runs:
-            lazy_repeat = 16 if check == "noise" else repeat
-            status, err, rows, sems = radiance(files, rays, repeat, options, tmp, out=OUT)
-            blocks.append(dict(group=group, name=name, files=files, rays=rays,
-                               repeat=lazy_repeat, options=options, check=check,
-                               status=status, err=err, rows=rows,
-                               sems=sems if check == "noise" else [],
-                               notes=[f"Radiance's mean over {repeat} repeats"]
-                               if check == "noise" else []))
-    write_expected(os.path.join(OUT, "expected.txt"),
+    run_and_write(runs, radiance, OUT,
                    "# Real Radiance 5.4a's answers for the texture and mixture cases of\n"
                    "# tests/direct/direct_matrix_test.cpp, written by\n"
-                   "# tests/direct/generate_textures.py (format as in generate.py).\n",
-                   blocks)
-    print(f"{len(blocks)} runs written to {OUT}", file=sys.stderr)
+                   "# tests/direct/generate_textures.py (format as in generate.py).\n")
 
 
 if __name__ == "__main__":

@@ -2,6 +2,9 @@
 # standard error of repeated rows, and the expected.txt format that
 # tests/direct/direct_matrix_test.cpp reads (described in generate.py).
 import math
+import os
+import sys
+import tempfile
 
 
 def mean_and_sem(rows, rays, repeat):
@@ -33,3 +36,36 @@ def write_expected(path, header, blocks):
             for row in b["sems"]:
                 f.write("sem " + " ".join("%.4g" % v for v in row) + "\n")
             f.write("end\n")
+
+
+def run_and_write(runs, radiance, out, header):
+    """Runs each (group, name, files, rays, repeat, options, check) of `runs`
+    through real Radiance (`radiance`, generate_patterns.radiance) and writes
+    out/expected.txt after `header`. "noise" runs: Radiance's mean over
+    `repeat` repeats against lazyrad's over 16."""
+    blocks = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for group, name, files, rays, repeat, options, check in runs:
+            lazy_repeat = 16 if check == "noise" else repeat
+            status, err, rows, sems = radiance(files, rays, repeat, options, tmp, out=out)
+            blocks.append(dict(group=group, name=name, files=files, rays=rays,
+                               repeat=lazy_repeat, options=options, check=check,
+                               status=status, err=err, rows=rows,
+                               sems=sems if check == "noise" else [],
+                               notes=[f"Radiance's mean over {repeat} repeats"]
+                               if check == "noise" else []))
+    write_expected(os.path.join(out, "expected.txt"), header, blocks)
+    print(f"{len(blocks)} runs written to {out}", file=sys.stderr)
+
+
+# The room x, y in [-2, 2], z in [-1, 2], faces turned inwards, with a lamp:
+# where the -ab 1 cases put the surface they test.
+LIT_BOX = ("void plastic wall 0 0 5 .5 .5 .5 0 0\n" + "".join(
+    f"wall polygon {n} 0 0 12 {v}\n" for n, v in (
+        ("floor", "-2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1"),
+        ("ceiling", "-2 -2 2  -2 2 2  2 2 2  2 -2 2"),
+        ("south", "-2 -2 -1  -2 -2 2  2 -2 2  2 -2 -1"),
+        ("north", "-2 2 -1  2 2 -1  2 2 2  -2 2 2"),
+        ("west", "-2 -2 -1  -2 2 -1  -2 2 2  -2 -2 2"),
+        ("east", "2 -2 -1  2 -2 2  2 2 2  2 2 -1"))) +
+    "void light l 0 0 3 20 20 20\nl sphere bulb 0 0 4 0 0 1.5 .2\n")
