@@ -262,37 +262,13 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
     };
     // Indirect light, from this side and (translucent) from the other, then
     // the direct light.
-    const Rgb front = mcolor * rdiff + (reflBelowThreshold ? scolor : Rgb());
-    const Rgb back = mcolor * tdiff + (transBelowThreshold ? mcolor * tspec : Rgb());
+    Rgb front, back;  // made only when used: plastic has no back
+    if (rdiff > kFtiny) front = mcolor * rdiff + (reflBelowThreshold ? scolor : Rgb());
+    if (tdiff > kFtiny) back = mcolor * tdiff + (transBelowThreshold ? mcolor * tspec : Rgb());
     AddIndirectAndDirect(tree, ts, ray, pnorm, rdiff > kFtiny ? &front : nullptr,
                          tdiff > kFtiny ? &back : nullptr, coefficient);
 }
 
-void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Vec3& normal,
-                          const Rgb* front, const Rgb* back,
-                          FunctionRef<Rgb(const Vec3&, double)> coefficient, bool addDirect) {
-    if (front) {
-        // What the point sends its viewer besides the ambient term: what the
-        // ray has so far and the direct light, computed on a copy, only when
-        // a deeper record is about to be made (the direct light is added
-        // after the ambient term, as Radiance does, for -dt's test).
-        const auto other = [&]() {
-            TracedRay copy = ray;
-            tree.direct().Add(ts, copy, coefficient);
-            return Bright(copy.rcol);
-        };
-        const OtherRadianceRef otherRef(other);
-        ray.rcol += tree.indirect().Ambient(ts, *front, ray, normal, &otherRef);
-    }
-    if (back) {
-        // The back side's deeper records are sampled in full: the direct
-        // light belongs to the front side's viewer.
-        ray.FlipSurface();
-        ray.rcol += tree.indirect().Ambient(ts, *back, ray, -normal);
-        ray.FlipSurface();
-    }
-    if (addDirect) tree.direct().Add(ts, ray, coefficient);
-}
 
 namespace {
 

@@ -7,15 +7,13 @@
 // DirectLight and IndirectLight for the light at its point.
 #pragma once
 
-#include "core/function_ref.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
+#include "shading/ray_tree.h"
 #include "shading/shading_state.h"
 #include "shading/traced_ray.h"
 
 namespace rt {
-
-class RayTree;
 
 /// Shades `ray` with material `m` by its type (not its modifier chain:
 /// RayTree::ShadeMaterial applies that first).
@@ -27,12 +25,35 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
 /// What every diffusely reflecting material ends with, in Radiance's order:
 /// the ambient term on the ray's side with coefficient `*front` about
 /// `normal`, on the other side with `*back` (the surface turned around for
-/// it), then, if `addDirect`, the direct light through `coefficient`. A null
-/// coefficient skips its term.
-void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Vec3& normal,
-                          const Rgb* front, const Rgb* back,
-                          FunctionRef<Rgb(const Vec3&, double)> coefficient,
-                          bool addDirect = true);
+/// it), then, if `addDirect`, the direct light through `coefficient` (the
+/// material's callable (const Vec3& ldir, double omega) -> Rgb). A null
+/// coefficient skips its term. Inline: plastic's shading is on every path.
+template <class Coefficient>
+inline void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay& ray,
+                                 const Vec3& normal, const Rgb* front, const Rgb* back,
+                                 Coefficient& coefficient, bool addDirect = true) {
+    if (front) {
+        // What the point sends its viewer besides the ambient term: what the
+        // ray has so far and the direct light, computed on a copy, only when
+        // a deeper record is about to be made (the direct light is added
+        // after the ambient term, as Radiance does, for -dt's test).
+        const auto other = [&]() {
+            TracedRay copy = ray;
+            tree.direct().Add(ts, copy, coefficient);
+            return Bright(copy.rcol);
+        };
+        const OtherRadianceRef otherRef(other);
+        ray.rcol += tree.indirect().Ambient(ts, *front, ray, normal, &otherRef);
+    }
+    if (back) {
+        // The back side's deeper records are sampled in full: the direct
+        // light belongs to the front side's viewer.
+        ray.FlipSurface();
+        ray.rcol += tree.indirect().Ambient(ts, *back, ray, -normal);
+        ray.FlipSurface();
+    }
+    if (addDirect) tree.direct().Add(ts, ray, coefficient);
+}
 
 /// plastic2, metal2 and trans2 (m_aniso.c), in aniso.cpp.
 void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
