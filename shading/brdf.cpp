@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: MIT
 //
-// plasfunc, metfunc, transfunc and their *data forms: Radiance's materials
-// whose directional reflection (or transmission) is a BRDF given as a
-// function (m_brdf.c, m_brdf2()). A diffuse part as plastic's, plus for each
-// light source sample the function of the light's direction times the
-// specularity; there are no specular rays: the indirect light reaches the
-// whole non-transmitted part (diffuse and directional) through the ambient
-// term, as in Radiance. Shadow rays never pass.
+// Radiance's materials whose directional reflection or transmission is
+// given as functions (m_brdf.c):
+// - plasfunc, metfunc, transfunc and their *data forms (m_brdf2()): a
+//   diffuse part as plastic's, plus for each light source sample the
+//   function of the light's direction times the specularity. There are no
+//   specular rays: the indirect light reaches the whole non-transmitted part
+//   (diffuse and directional) through the ambient term. Shadow rays never
+//   pass.
+// - BRTDfunc (m_brdf()): a mirror ray and a straight transmitted ray whose
+//   coefficients are expressions, diffuse parts per side, directional
+//   functions per channel; shadow rays pass with the transmission.
+#include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -15,6 +21,18 @@
 #include "shading/ray_tree.h"
 
 namespace rt {
+namespace {
+
+/// Radiance warns "compute error" at every evaluation that sets errno; once
+/// per material here.
+void WarnComputeError(ThreadState& ts, const Material& m) {
+    if (ts.brdfWarned.insert(&m).second) {
+        ts.Warn("compute error for " + std::string(MaterialTypeName(m.type)) + " \"" + m.name +
+                "\"");
+    }
+}
+
+}  // namespace
 
 void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
     if (ray.crtype & kShadowRay) return;  // "always a shadow"
@@ -52,21 +70,17 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         if (ldot > 0.0 ? rspec <= kFtiny : tspec <= kFtiny) return cval;  // diffuse only
         const std::optional<Rgb> brdf =
             EvaluateBrdf(setup.scene, ts, ray, m.function, inputs, ldir, omega);
-        const std::optional<double> f = brdf ? std::optional<double>(brdf->r) : std::nullopt;
-        if (!f) {
-            // Radiance warns at every call; once per material here.
-            if (ts.brdfWarned.insert(&m).second) {
-                ts.Warn("compute error for " + std::string(MaterialTypeName(m.type)) + " \"" +
-                        m.name + "\"");
-            }
+        if (!brdf) {
+            WarnComputeError(ts, m);
             return cval;
         }
-        if (*f <= kFtiny) return cval;
+        const double f = brdf->r;  // one function: grey
+        if (f <= kFtiny) return cval;
         if (ldot > 0.0) {
-            const Rgb c = colouredReflection ? mcolor * *f : Rgb::Grey(*f);
+            const Rgb c = colouredReflection ? mcolor * f : Rgb::Grey(f);
             cval += c * (ldot * omega * rspec);
         } else {
-            const Rgb c = transmits ? mcolor * *f : Rgb::Grey(*f);
+            const Rgb c = transmits ? mcolor * f : Rgb::Grey(f);
             cval += c * (-ldot * omega * tspec);
         }
         return cval;
@@ -78,10 +92,6 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
     AddIndirectAndDirect(tree, ts, ray, pnorm, trans < 1.0 - kFtiny ? &front : nullptr,
                          trans > kFtiny ? &back : nullptr, coefficient);
 }
-
-}  // namespace rt
-
-namespace rt {
 
 void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
     // BRTDfunc (m_brdf()): two-sided by its own arguments, -bv aside. The
@@ -107,17 +117,12 @@ void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
     const bool hasRefl = Bright(rdiff) > kFtiny;
     const bool hasTrans = Bright(tdiff) > kFtiny;
     const BrdfInputs inputs{pnorm, pdot, mcolor};
-    const auto warnCompute = [&] {
-        if (ts.brdfWarned.insert(&m).second) {
-            ts.Warn("compute error for BRTDfunc \"" + m.name + "\"");
-        }
-    };
 
     // Specular transmission straight through (bent by a texture, except
     // for shadow and ambient rays, which must reach what they aim at).
     double transTest = 0, transDistance = 0;
     if (const auto coef = EvaluateBrdfColour(setup.scene, ts, ray, m.function, inputs, 3); !coef) {
-        warnCompute();
+        WarnComputeError(ts, m);
     } else {
         TracedRay child;
         if (tree.StartChild(ts, child, ray, kTransRay, &*coef)) {
@@ -146,7 +151,7 @@ void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
 
     // Specular reflection in the (perturbed) mirror direction.
     if (const auto coef = EvaluateBrdfColour(setup.scene, ts, ray, m.function, inputs, 0); !coef) {
-        warnCompute();
+        WarnComputeError(ts, m);
     } else {
         TracedRay child;
         if (tree.StartChild(ts, child, ray, kReflectedRay, &*coef)) {
@@ -172,7 +177,7 @@ void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         const std::optional<Rgb> f =
             EvaluateBrdf(setup.scene, ts, ray, m.function, inputs, ldir, omega);
         if (!f) {
-            warnCompute();
+            WarnComputeError(ts, m);
             return cval;
         }
         if (Bright(*f) <= kFtiny) return cval;
