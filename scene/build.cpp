@@ -155,7 +155,7 @@ constexpr PatternSpec kOrientationSpec = {"orientation", PatternType::Orientatio
 constexpr PatternSpec kBrdfSpec = {"brdf", PatternType::Brdf, ModifierKind::Pattern, 0, 0, 1, 0};
 constexpr PatternSpec kBrdfDataSpec = {"brdfdata", PatternType::Brdf, ModifierKind::Pattern,
                                        0, -1, 1, 1, false, true};
-constexpr PatternSpec kBrtdSpec = {"brtd", PatternType::Brdf, ModifierKind::Pattern, 0, 6, 3,
+constexpr PatternSpec kBrtdSpec = {"brtd", PatternType::Brtd, ModifierKind::Pattern, 0, 6, 3,
                                    0, false, false, true};
 
 const PatternSpec* FindPatternSpec(const std::string& type) {

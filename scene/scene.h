@@ -146,7 +146,8 @@ struct Material {
     /// plasfunc, metfunc, transfunc: the BRDF (`func funcfile [xf]`,
     /// PatternType::Brdf, the function in data.functions); plasdata,
     /// metdata, transdata: the same with data (`func datafile funcfile
-    /// x1…xn [xf]`, the coordinates as values). BRTDfunc: `rrefl grefl
+    /// x1…xn [xf]`, the coordinates as values). BRTDfunc (PatternType::
+    /// Brtd): `rrefl grefl
     /// brefl rtrns gtrns btrns rbrtd gbrtd bbrtd funcfile [xf]`, the six
     /// expressions as values, the three functions in data.functions (slot
     /// -1 for a name starting with '0': zero, as in Radiance).
@@ -159,6 +160,7 @@ enum class PatternType {
     MixPict,
     Orientation,  // an anisotropic material's u direction: a vector, turned as a texture's
     Brdf,         // a BRDF material's function, with or without data
+    Brtd,         // BRTDfunc's six expressions and three functions (one per channel)
 };
 
 /// What a function modifier does to a ray (radiance-functions.md §11.1).

@@ -278,7 +278,7 @@ std::optional<Rgb> EvaluateBrdf(const Scene& scene, ThreadState& ts, const Trace
     const Vec3 l = evaluation.Direction(ldir);
     const double light[4] = {l.x, l.y, l.z, omega};
     Rgb value;
-    if (!brdf.values.empty() && brdf.data.arrays.empty()) {
+    if (brdf.type == PatternType::Brtd) {
         // BRTDfunc: a function per channel, none (a name from '0') for 0.
         for (int c = 0; c < 3; ++c) {
             const cal::Function f = brdf.data.functions[static_cast<std::size_t>(c)];

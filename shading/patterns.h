@@ -36,7 +36,7 @@ struct BrdfInputs {
     Rgb color;       // material colour times pattern colour
 };
 
-/// BRDF function `index` (Scene::patterns, PatternType::Brdf) for light
+/// BRDF function `index` (Scene::patterns, PatternType::Brdf or Brtd) for light
 /// arriving from unit `ldir` (render space) with solid angle `omega`:
 /// func(lx, ly, lz, omega) with the direction in the function's space (grey),
 /// for the *data types func(value at the coordinates, lx, ly, lz, omega),
