@@ -91,6 +91,29 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:2: conflicting material \"a\" in the modifiers of plastic \"b\"");
 }
 
+// The materials with functions of their own: what Radiance finds at the
+// first ray that meets them, lazyrad finds when the scene loads, in
+// Radiance's words.
+TEST(BuildScene, FunctionMaterialErrorsAreOneLineAtLoad) {
+    EXPECT_EQ(BuildError("void plastic2 m 4 1 0 0 . 0 6 .5 .5 .5 .05 0 .1\n"),
+              "t.rad:1: plastic2 \"m\": roughness too small");
+    EXPECT_EQ(BuildError("void metal2 m 4 1 0 0 . 0 5 .5 .5 .5 .05 .1\n"),
+              "t.rad:1: metal2 \"m\": bad number of real arguments");
+    EXPECT_EQ(BuildError("void trans2 m 3 1 0 0 0 8 .5 .5 .5 .05 .1 .1 .5 .5\n"),
+              "t.rad:1: trans2 \"m\": too few string arguments");
+    EXPECT_EQ(BuildError("void plasfunc m 1 refl 0 4 .5 .5 .5 .5\n"),
+              "t.rad:1: bad number of arguments for plasfunc \"m\"");
+    EXPECT_EQ(BuildError("void transfunc m 2 refl . 0 5 .5 .5 .5 .5 .5\n"),
+              "t.rad:1: bad number of arguments for transfunc \"m\"");
+    EXPECT_EQ(BuildError("void BRTDfunc m 9 0 0 0 0 0 0 0 0 0 0 9 0 0 0 0 0 0 0 0 0\n"),
+              "t.rad:1: bad number of arguments for BRTDfunc \"m\"");
+    EXPECT_EQ(BuildError("void metfunc m 2 nosuch . 0 4 .5 .5 .5 .5\n"),
+              "t.rad:1: metfunc \"m\": nosuch: undefined function");
+    // A BRTDfunc's directional function named from '0' is none, not a name.
+    EXPECT_EQ(BuildError("void BRTDfunc m 10 .1 .1 .1 0 0 0 0 nosuch 0 . 0 9 0 0 0 0 0 0 0 0 0\n"),
+              "t.rad:1: BRTDfunc \"m\": nosuch: undefined function");
+}
+
 TEST(BuildScene, UndefinedModifiers) {
     EXPECT_EQ(BuildError(std::string(kPlastic) + "\nred sphere s 0 0 4 0 0 0 1\n"),
               "t.rad:3: undefined modifier \"red\"");
