@@ -54,7 +54,8 @@ std::ostream& operator<<(std::ostream& os, const Hit& hit);
 /// dielectric, interface, an illum (passed, or shown as its alternate) or a
 /// trans with a specular transmission and no roughness, it is a mirror whose
 /// alternate material transmits, it has no material but modifiers (a hole),
-/// or a mixture is among its modifiers. A shadow ray that meets any other
+/// a mixture is among its modifiers, it is antimatter, or antimatter clips
+/// its modifier (passed by rays inside the antimatter). A shadow ray that meets any other
 /// surface returns black (back faces visible).
 bool TransmitsShadowRays(const Scene& scene, const Surface& surface);
 

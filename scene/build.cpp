@@ -85,7 +85,13 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"metdata", MaterialType::MetData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
     {"transdata", MaterialType::TransData, 6, kAnyCount, 0, MaterialFunction::BrdfData},
     {"BRTDfunc", MaterialType::BRTDFunc, 9, kAnyCount, 0, MaterialFunction::Brtd},
+    // Its strings are modifier names (checked in SetClipped); m_clip.c reads
+    // no real arguments and ignores any.
+    {"antimatter", MaterialType::Antimatter, 0, kAnyCount, kAnyCount},
 };
+
+/// Radiance's MAXSET: the most modifiers one antimatter may name.
+constexpr std::size_t kMaxClipped = 511;
 
 const MaterialSpec* FindMaterialSpec(const std::string& type) {
     for (const MaterialSpec& spec : kMaterialSpecs) {
@@ -105,6 +111,7 @@ struct ModifierDef {
     int material = -1;  // index into Scene::materials
     int pattern = -1;   // index into Scene::patterns
     int modifier = -1;  // the definition's own modifier (index into defs), -1 = void
+    int id = -1;        // Surface::modifierId of surfaces it modifies; set by Define()
 };
 
 /// The function modifiers lazyrad evaluates and the layout of their string
@@ -210,6 +217,7 @@ public:
     }
 
     Scene Finish() {
+        ResolvePendingClips();
         for (const Placement& p : topPlacements_) Flatten(p, Transform{}, nullptr, std::nullopt);
         SetCube();
         if (functions_) scene_.functions = std::move(functions_);
@@ -245,6 +253,8 @@ private:
     }
 
     void Define(const std::string& name, ModifierDef def) {
+        // Unique across the prototypes too, whose names are their own.
+        def.id = nextModifierId_++;
         defs_.push_back(def);
         byName_[name] = static_cast<int>(defs_.size()) - 1;
     }
@@ -543,6 +553,8 @@ private:
                         : spec->function == MaterialFunction::Brtd ? kBrtdSpec
                                                                    : kBrdfDataSpec));
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
+        } else if (spec->type == MaterialType::Antimatter) {
+            SetClipped(object, std::get<ClipParams>(material.params));
         } else if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);
             if (!alternate) {
@@ -563,10 +575,84 @@ private:
         Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1, modifier});
     }
 
+    /// antimatter's strings (m_clip.c): each names a modifier whose surfaces
+    /// rays entering the antimatter pass, the definition before the
+    /// antimatter (Radiance's lastmod()). The first is the same, though
+    /// Radiance meant it to shade the clipped solid's cut too: 5.4a never does
+    /// (README, "Differences"). Inside an instance Radiance takes the scene's
+    /// own last definition of a name wherever it has one, so those are
+    /// resolved when the scene is finished (ResolvePendingClips).
+    void SetClipped(const SceneObject& object, ClipParams& clip) {
+        if (object.sargs.empty() || object.sargs.size() > kMaxClipped) BadArgs(object);
+        PendingClip pending{scene_.materials.size(), object.loc, Describe(object), {}};
+        for (const std::string& name : object.sargs) {
+            if (name == "void") continue;
+            const auto def = Lookup(name);
+            pending.names.push_back({name, def ? defs_[static_cast<std::size_t>(*def)].id : -1});
+        }
+        if (surfaces_ == &scene_.surfaces) {
+            Clip(pending, clip);
+        } else {
+            pendingClips_.push_back(std::move(pending));
+        }
+    }
+
+    /// An antimatter's modifier names, each with the Surface::modifierId it
+    /// resolved to (-1: none), until they are added to its ClipParams.
+    struct PendingClip {
+        std::size_t material;  // index into Scene::materials
+        FileLoc loc;
+        std::string owner;     // Describe() of the antimatter
+        struct Name {
+            std::string name;
+            int id;
+        };
+        std::vector<Name> names;
+    };
+
+    /// Adds `pending`'s modifiers to `clip` and to the scene's list, with
+    /// Radiance's warnings.
+    void Clip(const PendingClip& pending, ClipParams& clip) {
+        for (const PendingClip::Name& n : pending.names) {
+            const std::string where = pending.loc.ToString() + ": ";
+            if (n.id < 0) {
+                if (warn_) {
+                    warn_(where + "unknown modifier \"" + PrintableWord(n.name) + "\" for " +
+                          pending.owner);
+                }
+                continue;
+            }
+            const auto at = std::lower_bound(clip.clipped.begin(), clip.clipped.end(), n.id);
+            if (at != clip.clipped.end() && *at == n.id) {
+                if (warn_) warn_(where + "duplicate modifier for " + pending.owner);
+                continue;
+            }
+            clip.clipped.insert(at, n.id);
+            const auto all = std::lower_bound(scene_.clippedModifiers.begin(),
+                                              scene_.clippedModifiers.end(), n.id);
+            if (all == scene_.clippedModifiers.end() || *all != n.id) {
+                scene_.clippedModifiers.insert(all, n.id);
+            }
+        }
+    }
+
+    /// The antimatter read inside instanced octrees and meshes: a name the
+    /// scene itself defines means the scene's last definition of it.
+    void ResolvePendingClips() {
+        for (PendingClip& p : pendingClips_) {
+            for (PendingClip::Name& n : p.names) {
+                if (const auto def = Lookup(n.name)) n.id = defs_[static_cast<std::size_t>(*def)].id;
+            }
+            Clip(p, std::get<ClipParams>(scene_.materials[p.material].params));
+        }
+        pendingClips_.clear();
+    }
+
     /// Sets the surface's material and the patterns between it and the
     /// material from the chain starting at definition `modifier`; a chain
     /// without a material leaves the surface as void.
     void SetModifiers(Surface& surface, int modifier) const {
+        surface.modifierId = modifier < 0 ? -1 : defs_[static_cast<std::size_t>(modifier)].id;
         ModifierChain chain = ChainFrom(modifier);
         surface.material = chain.material;
         surface.patterns = std::move(chain.modifiers);
@@ -983,6 +1069,8 @@ private:
     std::shared_ptr<cal::Program> functions_;
     std::vector<ModifierDef> defs_;
     std::unordered_map<std::string, int> byName_;
+    int nextModifierId_ = 0;  // ModifierDef::id
+    std::vector<PendingClip> pendingClips_;
 };
 
 }  // namespace

@@ -41,6 +41,7 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::MetData: return "metdata";
         case MaterialType::TransData: return "transdata";
         case MaterialType::BRTDFunc: return "BRTDfunc";
+        case MaterialType::Antimatter: return "antimatter";
     }
     return "unknown";
 }
@@ -63,6 +64,8 @@ const char* SurfaceTypeName(SurfaceType type) {
 }
 
 MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& a) {
+    // The builder fills in what antimatter clips; it has no real arguments.
+    if (type == MaterialType::Antimatter) return ClipParams{};
     const Rgb color(a[0], a[1], a[2]);
     switch (type) {
         case MaterialType::Plastic:
@@ -90,6 +93,7 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::TransData: return BrdfParams{color, a[3], a[4], a[5]};
         case MaterialType::BRTDFunc:
             return BrtdParams{color, Rgb(a[3], a[4], a[5]), Rgb(a[6], a[7], a[8])};
+        case MaterialType::Antimatter: break;
     }
     return NormalParams{};
 }

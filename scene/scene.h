@@ -10,6 +10,7 @@
 // rejected at load time with "file:line: unsupported material type 'X'".
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -45,9 +46,9 @@ struct SceneObject {
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
-    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc
+    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter
 };
-inline constexpr std::size_t kMaterialTypeCount = 21;
+inline constexpr std::size_t kMaterialTypeCount = 22;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -108,8 +109,16 @@ struct BrdfParams {
 struct BrtdParams {
     Rgb frontDiffuse, backDiffuse, diffuseTransmission;
 };
+/// antimatter (m_clip.c, no real arguments): the modifiers whose surfaces a
+/// ray no longer sees once it has entered the antimatter's front.
+struct ClipParams {
+    /// Surface::modifierId of each modifier named, sorted, without repeats;
+    /// the names are resolved as the antimatter is read (Radiance's lastmod()).
+    std::vector<int> clipped;
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
-                                    DielectricParams, AnisoParams, BrdfParams, BrtdParams>;
+                                    DielectricParams, AnisoParams, BrdfParams, BrtdParams,
+                                    ClipParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -265,6 +274,10 @@ struct Surface {
     std::string name;
     SurfaceType type;
     std::string modifierName;   // immediate modifier as written ("void" if none) — rtrace -om
+    /// The immediate modifier's definition, unique in the scene and its
+    /// prototypes (an alias is a definition of its own, as in Radiance); -1
+    /// for void. Antimatter clips surfaces by it (ClipParams).
+    int modifierId = -1;
     int material = -1;          // index into Scene::materials after aliases; -1 for void
     /// Modifiers between the surface and its material (a chain such as
     /// `m light l; l brightfunc b; b polygon p`), indices into Scene::patterns;
@@ -349,6 +362,15 @@ struct Scene {
     /// double-precision spacing of their coordinates), so a model drawn at
     /// 1e-4 behaves as at 1. Scenes of unit size or more keep exactly kFtiny.
     double distanceTolerance = kFtiny;
+    /// Every Surface::modifierId some antimatter names (ClipParams), sorted:
+    /// surfaces with one of these may be passed by rays, shadow rays included.
+    std::vector<int> clippedModifiers;
+
+    /// Whether some antimatter clips surfaces modified by `modifierId`.
+    bool MayBeClipped(int modifierId) const {
+        return modifierId >= 0 && std::binary_search(clippedModifiers.begin(),
+                                                     clippedModifiers.end(), modifierId);
+    }
 
     /// distanceTolerance / kFtiny, in (0, 1]: the factor applied to Radiance's
     /// other absolute lengths (the -I offsets, the ambient "behind" margin).

@@ -31,6 +31,7 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
     child.rtype = type;
     child.crtype = parent.crtype | type;
     child.depth = parent.depth + 1;
+    child.clip = parent.clip;
     child.rlvl = parent.rlvl + ((type & kReflectionTypes) ? 1 : 0);
     child.rcoef = coef ? *coef : Rgb(1, 1, 1);
     double w = coef ? std::min(1.0, Intens(*coef)) : 1.0;
@@ -108,6 +109,11 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
 
 void RayTree::Shade(ThreadState& ts, TracedRay& ray) const {
     const Surface& surface = s_.scene.HitSurface(ray.instance, ray.surface);
+    // Inside antimatter that clips it, the surface is not there (raycont()).
+    if (ray.Clips(surface.modifierId)) {
+        PassThrough(ts, ray);
+        return;
+    }
     if (surface.material < 0 && surface.patterns.empty()) return;  // void: nothing to shade, black
     if (ApplyModifiers(ts, ray, surface.patterns)) return;  // a mixture shaded it
     if (surface.material < 0) {
@@ -126,7 +132,8 @@ void RayTree::ShadeSurfaceMaterial(ThreadState& ts, TracedRay& ray, const Materi
     // (Radiance's irr_ignore and raytrans): the meter reads what arrives at the
     // surface behind the glass, not through it a second time.
     if (s_.shading.irradiance == IrradianceMode::AtHit &&
-        (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsLightType(m.type)) {
+        (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsLightType(m.type) &&
+        m.type != MaterialType::Antimatter) {
         if (IsTransparentType(m.type)) {
             PassThrough(ts, ray);
             return;
@@ -146,10 +153,12 @@ void RayTree::ShadeMaterial(ThreadState& ts, TracedRay& ray, const Material& m) 
     ShadeByType(*this, ts, ray, m);
 }
 
-void RayTree::PassThrough(ThreadState& ts, TracedRay& ray) const {
+void RayTree::PassThrough(ThreadState& ts, TracedRay& ray,
+                          const std::vector<int>* clip) const {
     TracedRay child;
     StartChild(ts, child, ray, kTransRay, nullptr);  // always continues, whatever the limits
     child.dir = ray.dir;
+    child.clip = clip;
     Trace(ts, child);
     ray.mcol = child.mcol;
     ray.rcol = child.rcol;

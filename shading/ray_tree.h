@@ -47,7 +47,10 @@ public:
     /// Shades a ray that hit `ray.surface` (rayshade()); with -i, Lamb replaces materials.
     void Shade(ThreadState& ts, TracedRay& ray) const;
     /// Pass-through (raytrans()): continues the ray unchanged past the surface.
-    void PassThrough(ThreadState& ts, TracedRay& ray) const;
+    void PassThrough(ThreadState& ts, TracedRay& ray) const { PassThrough(ts, ray, ray.clip); }
+    /// The same, the continuing ray and its children passing the surfaces
+    /// `clip` names instead of the ray's own (antimatter; TracedRay::clip).
+    void PassThrough(ThreadState& ts, TracedRay& ray, const std::vector<int>* clip) const;
     /// Applies the material's own chain, then shades with it (materials.h).
     void ShadeMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const;
     /// ShadeMaterial, except that with -i the first opaque surface reached by a

@@ -6,6 +6,9 @@
 // their parent for the path quantities (T, coefficients, trace output).
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
 #include "core/affine.h"
 #include "core/conventions.h"
 #include "core/rgb.h"
@@ -43,6 +46,10 @@ struct TracedRay {
     const TracedRay* parent = nullptr;
     int rsrc = -1;             // light source this shadow ray aims at, -1 for none
     int depth = 0;             // ray-tree depth for trace output
+    /// Surface::modifierIds whose surfaces this ray passes (Radiance's
+    /// clipset): set by antimatter the ray's path entered (ClipParams),
+    /// inherited by every child. Null (the rule) or empty: none.
+    const std::vector<int>* clip = nullptr;
 
     // Filled by tracing.
     int surface = -1;          // hit surface (Scene::HitSurface(instance, surface)) or -1
@@ -73,6 +80,11 @@ struct TracedRay {
     /// primary ray and any other ray that starts on no known surface.
     const Vec3* Leaving() const {
         return parent && !parent->hitDistant && org == parent->rop ? &parent->ron : nullptr;
+    }
+
+    /// Whether the ray passes surfaces modified by `modifierId` (antimatter).
+    bool Clips(int modifierId) const {
+        return clip != nullptr && std::binary_search(clip->begin(), clip->end(), modifierId);
     }
 
     /// Radiance's hastexture: |pert|² > FTINY².

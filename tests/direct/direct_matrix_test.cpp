@@ -30,6 +30,12 @@
 //   variables, with transforms, data, patterns, textures, an instance,
 //   -ab 1, -i, errors), answers in tests/data/brdf/expected.txt, RAYPATH
 //   that folder (its function file, data and instance).
+// - antimatter (tests/direct/generate_clip.py: cuts in thin and thick walls
+//   seen by view and shadow rays under a lamp and the sun, several
+//   modifiers, an alias, a redefinition, overlapping cuts, glass and a
+//   mirror in the cut, a ball with a bite, rays starting inside, an
+//   instance, -i, -I, -ab 1, warnings and errors), answers in
+//   tests/data/clip/expected.txt, RAYPATH that folder (its instance).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -141,6 +147,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("textures")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("aniso")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("brdf")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("clip")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -221,7 +228,8 @@ Outcome RunLazyrad(const MatrixRun& r) {
     std::ifstream raysFile(DataDir(r.dataset) + r.rays);
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
-    if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf") {
+    if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf" ||
+        r.dataset == "clip") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -330,6 +338,7 @@ INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("tex
                          GroupName);
 INSTANTIATE_TEST_SUITE_P(Aniso, DirectMatrix, ::testing::ValuesIn(Groups("aniso")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Brdf, DirectMatrix, ::testing::ValuesIn(Groups("brdf")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Clip, DirectMatrix, ::testing::ValuesIn(Groups("clip")), GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -358,6 +367,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("textures").size(), 8u);
     EXPECT_GE(Groups("aniso").size(), 6u);
     EXPECT_GE(Groups("brdf").size(), 5u);
+    EXPECT_GE(Groups("clip").size(), 3u);
 }
 
 }  // namespace

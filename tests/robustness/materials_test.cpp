@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 //
 // The function-driven materials (plastic2, metal2, trans2, plasfunc,
-// transdata, BRTDfunc) inside a lit room, through the whole indirect
+// transdata, BRTDfunc) inside a lit room whose window is an antimatter cut
+// (rays through it carry a clipped set), through the whole indirect
 // calculation: the matrix of tests/direct/ checks them against Radiance at
 // -ab 0 and at -ab 1 without a cache; here they meet the ambient cache with
 // every record method, deeper bounces, multiple specular samples and two
@@ -48,7 +49,16 @@ std::string Room() {
         "td polygon e 0 0 12 1.9 -1 -1  1.9 -1 1  1.9 0 1  1.9 0 -1\n"
         "void BRTDfunc glaze 10 brefl brefl brefl btrans btrans btrans bd bd bd2 " + data +
         "brdf.cal 0 12 .1 .15 .2 .05 .05 .05 .2 .2 .2 .08 .5 .4\n"
-        "glaze polygon g 0 0 12 -1 -1 .5  1 -1 .5  1 1 .5  -1 1 .5\n";
+        "glaze polygon g 0 0 12 -1 -1 .5  1 -1 .5  1 1 .5  -1 1 .5\n"
+        // A window cut in the north wall, a sky beyond it.
+        "void antimatter cut 1 wall 0 0\n"
+        "cut polygon c1 0 0 12 -.5 1.8 0  .5 1.8 0  .5 1.8 1  -.5 1.8 1\n"
+        "cut polygon c2 0 0 12 -.5 2.2 0  -.5 2.2 1  .5 2.2 1  .5 2.2 0\n"
+        "cut polygon c3 0 0 12 -.5 1.8 0  -.5 1.8 1  -.5 2.2 1  -.5 2.2 0\n"
+        "cut polygon c4 0 0 12 .5 1.8 0  .5 2.2 0  .5 2.2 1  .5 1.8 1\n"
+        "cut polygon c5 0 0 12 -.5 1.8 0  -.5 2.2 0  .5 2.2 0  .5 1.8 0\n"
+        "cut polygon c6 0 0 12 -.5 1.8 1  .5 1.8 1  .5 2.2 1  -.5 2.2 1\n"
+        "void glow skyglow 0 0 4 2 2 2.5 0\nskyglow source sky 0 0 4 0 1 .3 120\n";
     return WriteTempFile("materials_room.rad", text);
 }
 
@@ -58,7 +68,7 @@ std::string Sensors() {
     return WriteTempFile("materials_room.pts",
                          "0 0 -.99 0 0 1\n-1 -1 -.89 0 0 1\n1 -1 -.89 0 0 1\n"
                          "1.5 1.5 -.99 0 0 1\n-1.89 1 0 1 0 0\n1.89 -.5 0 -1 0 0\n"
-                         "0 0 .51 0 0 1\n0 0 .49 0 0 -1\n");
+                         "0 0 .51 0 0 1\n0 0 .49 0 0 -1\n0 1.5 -.99 0 0 1\n");
 }
 
 /// Camera rays onto each material, from both sides where it has two.
@@ -66,7 +76,7 @@ std::string Views() {
     return WriteTempFile("materials_room.rays",
                          "0 0 1.9 -.5 -.5 -1\n0 0 1.9 .5 -.5 -1\n0 0 1.9 .5 .5 -1\n"
                          "0 0 0 -1 .5 0\n-1.95 1 0 1 0 0\n0 0 0 1 -.4 0\n"
-                         "0 0 1.9 .1 .1 -1\n0 0 0 .1 .2 1\n");
+                         "0 0 1.9 .1 .1 -1\n0 0 0 .1 .2 1\n0 0 -.2 0 1 .3\n");
 }
 
 class MaterialsRoom : public ::testing::TestWithParam<const char*> {};
@@ -82,9 +92,9 @@ TEST_P(MaterialsRoom, FiniteAndAboveTheDirectLight) {
     EXPECT_EQ(run.err, "");
     const Rows d = direct.Numbers();
     const Rows r = run.Numbers();
-    ASSERT_EQ(r.size(), 8u);
-    ASSERT_TRUE(FiniteNonNegative(r, 8, 3)) << run.out;
-    ASSERT_TRUE(FiniteNonNegative(d, 8, 3)) << direct.out;
+    ASSERT_EQ(r.size(), 9u);
+    ASSERT_TRUE(FiniteNonNegative(r, 9, 3)) << run.out;
+    ASSERT_TRUE(FiniteNonNegative(d, 9, 3)) << direct.out;
     double gained = 0;
     for (std::size_t i = 0; i < r.size(); ++i) {
         for (std::size_t c = 0; c < 3; ++c) {
@@ -99,7 +109,9 @@ TEST_P(MaterialsRoom, FiniteAndAboveTheDirectLight) {
                                      Views(), 120);
     ASSERT_EQ(seen.status, 0) << seen.err;
     EXPECT_EQ(seen.err, "");
-    ASSERT_TRUE(FiniteNonNegative(seen.Numbers(), 8, 3)) << seen.out;
+    ASSERT_TRUE(FiniteNonNegative(seen.Numbers(), 9, 3)) << seen.out;
+    // The window: the sky through the cut, not the wall.
+    EXPECT_NEAR(seen.Numbers().back()[2], 2.5, 1e-9) << seen.out;
 }
 
 INSTANTIATE_TEST_SUITE_P(Settings, MaterialsRoom,

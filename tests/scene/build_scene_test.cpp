@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/conventions.h"
@@ -79,8 +80,8 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: unsupported material type 'BSDF'");
     EXPECT_EQ(BuildError("void ashik2 a 4 1 0 0 . 0 8 .5 .5 .5 .1 .1 .1 10 10\n"),
               "t.rad:1: unsupported material type 'ashik2'");
-    EXPECT_EQ(BuildError("void antimatter a 1 void 0 0\n"),
-              "t.rad:1: unsupported material type 'antimatter'");
+    EXPECT_EQ(BuildError("void prism1 p 5 1 0 0 0 . 0 1 1\n"),
+              "t.rad:1: unsupported material type 'prism1'");
     // The text types need Radiance's font files.
     EXPECT_EQ(BuildError("void brighttext t 2 helvet.fnt text.txt 0 9 0 0 0 1 0 0 0 0 1\n"),
               "t.rad:1: unsupported material type 'brighttext' (text patterns need Radiance's "
@@ -112,6 +113,45 @@ TEST(BuildScene, FunctionMaterialErrorsAreOneLineAtLoad) {
     // A BRTDfunc's directional function named from '0' is none, not a name.
     EXPECT_EQ(BuildError("void BRTDfunc m 10 .1 .1 .1 0 0 0 0 nosuch 0 . 0 9 0 0 0 0 0 0 0 0 0\n"),
               "t.rad:1: BRTDfunc \"m\": nosuch: undefined function");
+}
+
+// antimatter (m_clip.c): what it clips is a modifier's definition, not its
+// name; Radiance's argument limits and warnings.
+TEST(BuildScene, AntimatterClipsDefinitions) {
+    std::vector<std::string> warnings;
+    const Scene scene = BuildText(
+        "void plastic w 0 0 5 .5 .5 .5 0 0\n"
+        "void alias w2 w\n"
+        "w polygon a 0 0 9 0 0 0 1 0 0 0 1 0\n"
+        "w2 polygon b 0 0 9 0 0 1 1 0 1 0 1 1\n"
+        "void antimatter cut 4 w void nosuch w 0 0\n"
+        "void plastic w 0 0 5 .5 .5 .5 0 0\n"
+        "w polygon c 0 0 9 0 0 2 1 0 2 0 1 2\n"
+        "cut sphere s 0 0 4 0 0 0 .5\n",
+        &warnings);
+    ASSERT_EQ(scene.surfaces.size(), 4u);
+    EXPECT_TRUE(scene.MayBeClipped(scene.surfaces[0].modifierId));
+    EXPECT_FALSE(scene.MayBeClipped(scene.surfaces[1].modifierId));  // the alias
+    EXPECT_FALSE(scene.MayBeClipped(scene.surfaces[2].modifierId));  // w defined after
+    EXPECT_FALSE(scene.MayBeClipped(scene.surfaces[3].modifierId));
+    EXPECT_EQ(scene.surfaces[1].material, scene.surfaces[0].material);  // still shaded as w
+    const auto cut = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                  [](const Material& m) { return m.name == "cut"; });
+    ASSERT_NE(cut, scene.materials.end());
+    const auto& clip = std::get<ClipParams>(cut->params);
+    EXPECT_EQ(clip.clipped, std::vector<int>{scene.surfaces[0].modifierId});
+    EXPECT_EQ(warnings, (std::vector<std::string>{
+                            "t.rad:5: unknown modifier \"nosuch\" for antimatter \"cut\"",
+                            "t.rad:5: duplicate modifier for antimatter \"cut\""}));
+    // One to Radiance's MAXSET (511) names.
+    EXPECT_EQ(BuildError("void antimatter a 0 0 0\n"),
+              "t.rad:1: bad number of arguments for antimatter \"a\"");
+    std::string many = "void antimatter a 512";
+    for (int k = 0; k < 512; ++k) many += " void";
+    EXPECT_EQ(BuildError(many + " 0 0\n"), "t.rad:1: bad number of arguments for antimatter \"a\"");
+    many = "void antimatter a 511";
+    for (int k = 0; k < 511; ++k) many += " void";
+    EXPECT_NO_THROW(BuildText(many + " 0 0\n"));
 }
 
 TEST(BuildScene, UndefinedModifiers) {
