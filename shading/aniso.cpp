@@ -77,16 +77,6 @@ FacetSample DrawFacet(const AnisoFrame& f, double specularSampling, Rng& rng) {
     return {cosp, sinp, d};
 }
 
-/// Sample rays a rough lobe of coefficient `coef` gets (-ss above 1.5:
-/// several, each kept above -lw).
-int LobeSamples(const ShadingSetup& setup, const TracedRay& ray, const Rgb& coef) {
-    if (setup.shading.specular.sampling <= 1.5) return 1;
-    int n = static_cast<int>(setup.shading.specular.sampling * ray.rweight + 0.5);
-    const double lw = setup.shading.limits.weight;
-    if (lw > 0) n = std::min(n, std::max(1, static_cast<int>(ray.rweight * Intens(coef) / lw)));
-    return std::max(n, 1);
-}
-
 }  // namespace
 
 void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {

@@ -175,13 +175,7 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
     // Rough specular: sample rays around the mirror (and transmitted) direction
     // when above -st; below it, the highlight joins the ambient coefficient.
     if (!pure && hasSpecRefl && !reflBelowThreshold) {
-        int n = 1;
-        if (setup.shading.specular.sampling > 1.5) {
-            n = static_cast<int>(setup.shading.specular.sampling * ray.rweight + 0.5);
-            const double lw = setup.shading.limits.weight;
-            if (lw > 0) n = std::min(n, std::max(1, static_cast<int>(ray.rweight * Intens(scolor) / lw)));
-            n = std::max(n, 1);
-        }
+        const int n = LobeSamples(setup, ray, scolor);
         Rgb coef = scolor / double(n);
         const Vec3 u = Perpendicular(pnorm);
         const Vec3 v = Cross(pnorm, u);
@@ -209,10 +203,14 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         ray.rcol += sum;
     }
     if (!pure && hasSpecTrans && !transBelowThreshold) {
-        Rgb coef = mcolor * tspec;
+        // Several samples with -ss above 1.5, as for the reflection, each
+        // with its share of the coefficient (no weighting: normal.c).
+        const Rgb lobe = mcolor * tspec;
+        const int n = LobeSamples(setup, ray, lobe);
+        const Rgb coef = lobe / double(n);
         const Vec3 u = Perpendicular(pnorm);
         const Vec3 v = Cross(pnorm, u);
-        for (int tries = 0; tries < kMaxSpecularTries; ++tries) {
+        for (int tries = 0, done = 0; done < n && tries < kMaxSpecularTries * n; ++tries) {
             double phi = 2.0 * kPi * ts.rng.Uniform();
             double r2 = ts.rng.Uniform();
             // -ss below 1 narrows the lobe as for reflection; at 1, 1 - r2
@@ -227,7 +225,7 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
             child.dir = Normalize(sdir);
             tree.Trace(ts, child);
             ray.rcol += child.rcol * child.rcoef;
-            break;
+            ++done;
         }
     }
 
@@ -515,6 +513,14 @@ void ShadeAntimatter(const RayTree& tree, ThreadState& ts, TracedRay& ray, const
 }
 
 }  // namespace
+
+int LobeSamples(const ShadingSetup& setup, const TracedRay& ray, const Rgb& coef) {
+    if (setup.shading.specular.sampling <= 1.5) return 1;
+    int n = static_cast<int>(setup.shading.specular.sampling * ray.rweight + 0.5);
+    const double lw = setup.shading.limits.weight;
+    if (lw > 0) n = std::min(n, std::max(1, static_cast<int>(ray.rweight * Intens(coef) / lw)));
+    return std::max(n, 1);
+}
 
 void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
     // One row per MaterialType, in its order: adding a material is a row

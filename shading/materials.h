@@ -64,6 +64,11 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
 /// BRTDfunc (m_brdf.c's m_brdf()), in brdf.cpp.
 void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// Sample rays a rough specular lobe of coefficient `coef` gets: one, or
+/// with -ss above 1.5 about -ss times the ray's weight, each kept above -lw
+/// (Radiance's nstarget in normal.c and m_aniso.c).
+int LobeSamples(const ShadingSetup& setup, const TracedRay& ray, const Rgb& coef);
+
 /// Radiance's isflat() for the surface a ray hit: polygons (mesh triangles
 /// shading with their own material among them) and rings. Flat surfaces
 /// widen highlights by the source's size.
