@@ -90,6 +90,7 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Plastic2:
         case MaterialType::Metal2:
         case MaterialType::Trans2:  // m_aniso.c stops every shadow ray
+        case MaterialType::Ashik2:
         case MaterialType::PlasFunc:
         case MaterialType::MetFunc:
         case MaterialType::TransFunc:  // so does m_brdf2()

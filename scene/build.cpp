@@ -78,6 +78,7 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"plastic2", MaterialType::Plastic2, 6, 6, 0, MaterialFunction::Orientation},
     {"metal2", MaterialType::Metal2, 6, 6, 0, MaterialFunction::Orientation},
     {"trans2", MaterialType::Trans2, 8, 8, 0, MaterialFunction::Orientation},
+    {"ashik2", MaterialType::Ashik2, 8, 8, 0, MaterialFunction::Orientation},
     {"plasfunc", MaterialType::PlasFunc, 4, kAnyCount, 0, MaterialFunction::Brdf},
     {"metfunc", MaterialType::MetFunc, 4, kAnyCount, 0, MaterialFunction::Brdf},
     {"transfunc", MaterialType::TransFunc, 6, kAnyCount, 0, MaterialFunction::Brdf},
@@ -541,8 +542,10 @@ private:
         if (spec->function == MaterialFunction::Orientation) {
             // Radiance stops at the first ray that meets such a surface
             // ("roughness too small"); here when the scene loads.
-            const auto& p = std::get<AnisoParams>(material.params);
-            if (p.uRoughness <= kFtiny || p.vRoughness <= kFtiny) Fail(object, "roughness too small");
+            const auto* p = std::get_if<AnisoParams>(&material.params);  // not ashik2's
+            if (p && (p->uRoughness <= kFtiny || p->vRoughness <= kFtiny)) {
+                Fail(object, "roughness too small");
+            }
             scene_.patterns.push_back(MakePattern(object, kOrientationSpec));
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (spec->function != MaterialFunction::None) {

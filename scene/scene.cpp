@@ -42,6 +42,7 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::TransData: return "transdata";
         case MaterialType::BRTDFunc: return "BRTDfunc";
         case MaterialType::Antimatter: return "antimatter";
+        case MaterialType::Ashik2: return "ashik2";
     }
     return "unknown";
 }
@@ -94,6 +95,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::BRTDFunc:
             return BrtdParams{color, Rgb(a[3], a[4], a[5]), Rgb(a[6], a[7], a[8])};
         case MaterialType::Antimatter: break;
+        case MaterialType::Ashik2:
+            return AshikParams{color, Rgb(a[3], a[4], a[5]), a[6], a[7]};
     }
     return NormalParams{};
 }

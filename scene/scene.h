@@ -46,9 +46,9 @@ struct SceneObject {
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
-    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter
+    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter, Ashik2
 };
-inline constexpr std::size_t kMaterialTypeCount = 22;
+inline constexpr std::size_t kMaterialTypeCount = 23;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -109,6 +109,13 @@ struct BrdfParams {
 struct BrtdParams {
     Rgb frontDiffuse, backDiffuse, diffuseTransmission;
 };
+/// ashik2 (8 reals, Radiance's ashikhmin.c): Ashikhmin and Shirley's
+/// anisotropic Phong model, u from the material's orientation function.
+struct AshikParams {
+    Rgb diffuse;                     // diffuse reflectance, not reduced by the specular part
+    Rgb specular;                    // specular reflectance at normal incidence (Schlick)
+    double uPower = 0, vPower = 0;   // Phong exponents along u and v
+};
 /// antimatter (m_clip.c, no real arguments): the modifiers whose surfaces a
 /// ray no longer sees once it has entered the antimatter's front.
 struct ClipParams {
@@ -118,7 +125,7 @@ struct ClipParams {
 };
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
                                     DielectricParams, AnisoParams, BrdfParams, BrtdParams,
-                                    ClipParams>;
+                                    ClipParams, AshikParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.

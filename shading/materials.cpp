@@ -549,6 +549,7 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeBrdf,        // transdata
         &ShadeBrtd,        // BRTDfunc
         &ShadeAntimatter,  // antimatter
+        &ShadeAshik,       // ashik2
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

@@ -58,6 +58,9 @@ inline void AddIndirectAndDirect(const RayTree& tree, ThreadState& ts, TracedRay
 /// plastic2, metal2 and trans2 (m_aniso.c), in aniso.cpp.
 void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// ashik2 (ashikhmin.c), in aniso.cpp.
+void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
 /// plasfunc, metfunc, transfunc, plasdata, metdata, transdata (m_brdf.c's
 /// m_brdf2()), in brdf.cpp.
 void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);

@@ -36,6 +36,10 @@
 //   mirror in the cut, a ball with a bite, rays starting inside, an
 //   instance, -i, -I, -ab 1, warnings and errors), answers in
 //   tests/data/clip/expected.txt, RAYPATH that folder (its instance).
+// - ashik2 (tests/direct/generate_ashik.py: forms of u on planes, balls and
+//   rings under three kinds of source, both sides, a pattern, a texture, an
+//   instance, the sampled reflection at -ss 1 and 4, -ab 1, -i, errors),
+//   answers in tests/data/ashik/expected.txt, RAYPATH that folder.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -148,6 +152,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("aniso")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("brdf")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("clip")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("ashik")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -229,7 +234,7 @@ Outcome RunLazyrad(const MatrixRun& r) {
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
     if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf" ||
-        r.dataset == "clip") {
+        r.dataset == "clip" || r.dataset == "ashik") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -339,6 +344,7 @@ INSTANTIATE_TEST_SUITE_P(Textures, DirectMatrix, ::testing::ValuesIn(Groups("tex
 INSTANTIATE_TEST_SUITE_P(Aniso, DirectMatrix, ::testing::ValuesIn(Groups("aniso")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Brdf, DirectMatrix, ::testing::ValuesIn(Groups("brdf")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Clip, DirectMatrix, ::testing::ValuesIn(Groups("clip")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Ashik, DirectMatrix, ::testing::ValuesIn(Groups("ashik")), GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -407,6 +413,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("aniso").size(), 6u);
     EXPECT_GE(Groups("brdf").size(), 5u);
     EXPECT_GE(Groups("clip").size(), 3u);
+    EXPECT_GE(Groups("ashik").size(), 6u);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// The function-driven materials (plastic2, metal2, trans2, plasfunc,
+// The function-driven materials (plastic2, metal2, trans2, ashik2, plasfunc,
 // transdata, BRTDfunc) inside a lit room whose window is an antimatter cut
 // (rays through it carry a clipped set), through the whole indirect
 // calculation: the matrix of tests/direct/ checks them against Radiance at
@@ -50,6 +50,8 @@ std::string Room() {
         "void BRTDfunc glaze 10 brefl brefl brefl btrans btrans btrans bd bd bd2 " + data +
         "brdf.cal 0 12 .1 .15 .2 .05 .05 .05 .2 .2 .2 .08 .5 .4\n"
         "glaze polygon g 0 0 12 -1 -1 .5  1 -1 .5  1 1 .5  -1 1 .5\n"
+        "void ashik2 ash 4 1 0 0 . 0 8 .3 .3 .3 .2 .2 .2 60 8\n"
+        "ash sphere as1 0 0 4 -1 1 -.7 .3\n"
         // A window cut in the north wall, a sky beyond it.
         "void antimatter cut 1 wall 0 0\n"
         "cut polygon c1 0 0 12 -.5 1.8 0  .5 1.8 0  .5 1.8 1  -.5 1.8 1\n"

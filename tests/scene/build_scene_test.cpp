@@ -78,8 +78,8 @@ TEST(BuildScene, WrongArgumentCountsNameTheMaterial) {
 TEST(BuildScene, UnsupportedTypesAreRejected) {
     EXPECT_EQ(BuildError("void BSDF b 6 0 blinds.xml 0 0 1 . 0 0\n"),
               "t.rad:1: unsupported material type 'BSDF'");
-    EXPECT_EQ(BuildError("void ashik2 a 4 1 0 0 . 0 8 .5 .5 .5 .1 .1 .1 10 10\n"),
-              "t.rad:1: unsupported material type 'ashik2'");
+    EXPECT_EQ(BuildError("void prism2 p 9 1 0 0 0 1 0 0 0 . 0 1 1\n"),
+              "t.rad:1: unsupported material type 'prism2'");
     EXPECT_EQ(BuildError("void prism1 p 5 1 0 0 0 . 0 1 1\n"),
               "t.rad:1: unsupported material type 'prism1'");
     // The text types need Radiance's font files.
