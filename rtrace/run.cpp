@@ -22,9 +22,6 @@ void WarnUnimplemented(const RtraceOptions& o, const WarningSink& warn) {
     if (!o.persistFile.empty())
         warn("persistent mode (-P/-PP) not implemented, processing input once");
     if (!o.photonMaps.empty()) warn("photon mapping (-ap) not implemented, option ignored");
-    const MediumOptions& m = o.shading.medium;
-    if (m.extinction != Rgb() || m.albedo != Rgb() || m.eccentricity != 0 || m.samplingDistance != 0)
-        warn("participating medium (-me/-ma/-mg/-ms) not implemented, options ignored");
 }
 
 /// The record Radiance's bogusray() prints for a flush request: the previous

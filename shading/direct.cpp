@@ -54,6 +54,22 @@ void SortBrightestFirst(std::vector<Contribution>& c, std::vector<Contribution>&
     }
 }
 
+/// What a medium between the point and each source (the whole way to a
+/// distant one) lets through of its light (srcvalue()'s rayparticipate()):
+/// scales the contributions, and drops those it extinguishes.
+void AttenuateByMedium(const Medium& medium, const std::vector<LightSource>& sources,
+                       std::vector<DirectContribution>& contribs) {
+    for (DirectContribution& c : contribs) {
+        const LightSource& src = sources[static_cast<std::size_t>(c.source)];
+        const bool distant = src.shape == LightSource::Shape::Distant && !src.IsVirtual();
+        c.value *= RayTree::ShadowTransmittance(medium, distant ? kFhuge : c.distance);
+        c.bright = Bright(c.value);
+    }
+    contribs.erase(std::remove_if(contribs.begin(), contribs.end(),
+                                  [](const DirectContribution& c) { return c.bright <= 0.0; }),
+                   contribs.end());
+}
+
 }  // namespace
 
 void DirectLight::CountAim(ThreadState& ts, int source, bool hit) const {
@@ -222,6 +238,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             contribs.emplace_back(s.source, s.dir, distance, coefficient, value, bright);
         }
     }
+    if (ray.medium) AttenuateByMedium(*ray.medium, s_.sources, contribs);
     if (contribs.empty()) return;
     SortBrightestFirst(contribs, scratch.sortBuffer);
     const int n = static_cast<int>(contribs.size());
@@ -291,6 +308,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             // Shaded past the surface in between (Radiance's raycont()).
             sray.rcol = Rgb();
             tree_.Shade(ts, sray);
+            tree_.Participate(sray);
             tree_.Report(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;

@@ -459,18 +459,22 @@ void ShadeDielectric(const RayTree& tree, ThreadState& ts, TracedRay& ray, const
         // Radiance is squeezed into the narrower cone of the denser medium: η².
         Rgb coef = Rgb::Grey((1.0 - reflectance) * eta * eta);
         TracedRay child;
+        // The medium the refracted ray enters absorbs -ln(colour) per unit
+        // length (Beer–Lambert), over every segment it and its children run
+        // inside, internal reflections included (RayTree::Participate).
+        Medium entered;
+        for (int i = 0; i < 3; ++i) entered.extinction[i] = -std::log(std::clamp(beyond[i], 1e-15, 1.0));
         if (tree.StartChild(ts, child, ray, kRefractedRay, &coef)) {
             // Shadow rays keep their direction so they can still reach the
             // source they aim at (lazyrad simplification, see README).
             child.dir = (ray.crtype & kShadowRay) ? ray.dir : refracted;
+            child.medium = Intens(entered.extinction) > 0.0 ? &entered : nullptr;
+            // Out of a dielectric, back into the scene's own medium.
+            if (!entering && m.type == MaterialType::Dielectric) {
+                child.medium = setup.hasMedium ? &setup.medium : nullptr;
+            }
             tree.Trace(ts, child);
             Rgb c = child.rcol * child.rcoef;
-            // Beer–Lambert attenuation over the child's path in the medium.
-            double dist = child.rot < kFhuge ? child.rot : 0.0;
-            for (int i = 0; i < 3; ++i) {
-                double col = std::max(beyond[i], 1e-15);
-                if (col < 1.0 && dist > 0) c[i] *= std::exp(std::log(col) * dist);
-            }
             ray.rcol += c;
             ray.rxt = ray.rot + child.EffectiveDistance();
         }

@@ -22,6 +22,16 @@ constexpr unsigned kReflectionTypes = kShadowRay | kReflectedRay | kAmbientRay |
 constexpr double kImmediateOffset = 1.1e-4;
 constexpr double kImmediateHit = 1e-5;
 
+/// exp(-optical depth) per channel as Radiance takes it: 1 below FTINY, 0
+/// above 92.
+Rgb Attenuation(const Rgb& depth) {
+    Rgb a;
+    for (int i = 0; i < 3; ++i) {
+        a[i] = depth[i] <= kFtiny ? 1.0 : depth[i] > 92.0 ? 0.0 : std::exp(-depth[i]);
+    }
+    return a;
+}
+
 }  // namespace
 
 bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
@@ -35,6 +45,14 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
     child.rlvl = parent.rlvl + ((type & kReflectionTypes) ? 1 : 0);
     child.rcoef = coef ? *coef : Rgb(1, 1, 1);
     double w = coef ? std::min(1.0, Intens(*coef)) : 1.0;
+    child.medium = parent.medium;
+    // The parent's path through a medium lowers the child's importance
+    // (rayorigin()'s extinction estimate, from the clearest channel).
+    if (parent.medium) {
+        const Rgb& e = parent.medium->extinction;
+        const double re = std::min({e.r, e.g, e.b}) * parent.rot;
+        if (re > 0.1) w *= re > 92.0 ? 0.0 : std::exp(-re);
+    }
     child.rweight = parent.rweight * w;
     child.sourceWeight = parent.sourceWeight * w;
     if (type & kReflectionTypes) {
@@ -104,7 +122,26 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
         ray.rot = kFhuge;
         ray.rop = ray.org;
     }
+    Participate(ray);
     Report(ts, ray);
+}
+
+void RayTree::ParticipateIn(const Medium& medium, TracedRay& ray) const {
+    if (Intens(medium.extinction) <= 1.0 / kFhuge) return;
+    const bool shadow = (ray.crtype & kShadowRay) != 0;
+    Rgb depth = medium.extinction * ray.rot;
+    if (shadow) depth *= Rgb(1, 1, 1) - medium.albedo;  // scattered light is not lost to a source
+    const Rgb kept = Attenuation(depth);
+    ray.rcol *= kept;
+    if (shadow || Intens(medium.albedo) <= kFtiny) return;
+    // Light scattered into the ray, from the ambient value (no light sources
+    // scatter into the global medium: Radiance lists none for it).
+    ray.rcol += medium.albedo * s_.ambient.value * (Rgb(1, 1, 1) - kept);
+}
+
+Rgb RayTree::ShadowTransmittance(const Medium& medium, double distance) {
+    if (Intens(medium.extinction) <= 1.0 / kFhuge) return Rgb(1, 1, 1);
+    return Attenuation(medium.extinction * (Rgb(1, 1, 1) - medium.albedo) * distance);
 }
 
 void RayTree::Shade(ThreadState& ts, TracedRay& ray) const {
@@ -248,6 +285,7 @@ RayResult RayTree::TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir,
     ray.org = org;
     ray.dir = dir;
     ray.rmax = rmax;
+    if (s_.hasMedium) ray.medium = &s_.medium;
     if (s_.shading.irradiance == IrradianceMode::Immediate) {
         // The input is a measurement point and the normal of the measuring
         // plane: pretend a ray came down the normal and hit a Lambertian meter.

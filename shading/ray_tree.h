@@ -61,6 +61,15 @@ public:
     bool ApplyModifiers(ThreadState& ts, TracedRay& ray, const std::vector<int>& modifiers) const {
         return !modifiers.empty() && ApplyModifierChain(*this, ts, ray, modifiers);
     }
+    /// Radiance's rayparticipate(): the medium's extinction over the ray's
+    /// length `rot`, then, for rays other than shadow rays, the light it
+    /// scatters in from the -av ambient value. No medium: nothing.
+    void Participate(TracedRay& ray) const {
+        if (ray.medium) ParticipateIn(*ray.medium, ray);
+    }
+    /// The share of a shadow ray's light that crosses `distance` of
+    /// `medium` (scattering counts as no loss for shadow rays, as Radiance).
+    static Rgb ShadowTransmittance(const Medium& medium, double distance);
     /// Hands a finished ray to the trace callback (-ot/-oT), if any.
     void Report(ThreadState& ts, const TracedRay& ray) const;
 
@@ -69,6 +78,7 @@ public:
     const IndirectLight& indirect() const { return indirect_; }
 
 private:
+    void ParticipateIn(const Medium& medium, TracedRay& ray) const;
     /// Looks for a distant source in the ray's direction (sourcehit()).
     bool HitDistantSource(TracedRay& ray) const;
     /// -I: a measuring point lying in the plane of a wall (a sensor on an

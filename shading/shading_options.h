@@ -28,7 +28,17 @@ struct LimitOptions {
     double weight = 2e-3;       // -lw
 };
 
-/// Global participating medium (-me -ma -mg -ms); parsed, not yet used.
+/// What a ray travels through (Radiance's cext and albedo): the global
+/// medium of -me and -ma, or a dielectric's inside.
+struct Medium {
+    Rgb extinction;  // per unit length, per channel
+    Rgb albedo;      // the share of the extinction that is scattering
+};
+
+/// Global participating medium (-me -ma -mg -ms): -me and -ma make every
+/// primary ray's Medium; -mg and -ms only matter for the in-scattering of
+/// mist's light sources, which lazyrad does not load (Radiance lists no
+/// sources for the global medium).
 struct MediumOptions {
     Rgb extinction;
     Rgb albedo;

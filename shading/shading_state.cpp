@@ -56,6 +56,8 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
         shadowCheckCounts[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
     }
 
+    medium = Medium{shading.medium.extinction, shading.medium.albedo};
+    hasMedium = Intens(medium.extinction) > 1.0 / kFhuge;
     queryShadows = shading.backfaceVisible;
     transmitting = core.HasTransmitting();
 }

@@ -68,6 +68,9 @@ struct ShadingSetup {
     /// -ab > 0 and -aa > 0; null otherwise, and then every point samples).
     std::shared_ptr<AmbientCache> cache;
     IrradianceCache irradiance;
+    /// -me and -ma; `hasMedium` false when the extinction is zero.
+    Medium medium;
+    bool hasMedium = false;
 };
 
 /// Radiance's per-source shadow-test statistics and aiming count (source.c,

@@ -14,6 +14,7 @@
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "raycore/raycore.h"
+#include "shading/shading_options.h"
 
 namespace rt {
 
@@ -50,6 +51,9 @@ struct TracedRay {
     /// clipset): set by antimatter the ray's path entered (ClipParams),
     /// inherited by every child. Null (the rule) or empty: none.
     const std::vector<int>* clip = nullptr;
+    /// The medium the ray travels through, inherited by every child unless
+    /// a dielectric sets it; null (the rule) for none: a vacuum.
+    const Medium* medium = nullptr;
 
     // Filled by tracing.
     int surface = -1;          // hit surface (Scene::HitSurface(instance, surface)) or -1

@@ -40,6 +40,10 @@
 //   rings under three kinds of source, both sides, a pattern, a texture, an
 //   instance, the sampled reflection at -ss 1 and 4, -ab 1, -i, errors),
 //   answers in tests/data/ashik/expected.txt, RAYPATH that folder.
+// - the participating medium (tests/direct/generate_medium.py: -me and -ma
+//   with -av on view rays, shadow rays, -I sensors, -ab 1, the sun; a
+//   dielectric block's absorption over every segment inside, with and
+//   without the global medium), answers in tests/data/medium/expected.txt.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -153,6 +157,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("brdf")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("clip")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("ashik")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("medium")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -345,6 +350,7 @@ INSTANTIATE_TEST_SUITE_P(Aniso, DirectMatrix, ::testing::ValuesIn(Groups("aniso"
 INSTANTIATE_TEST_SUITE_P(Brdf, DirectMatrix, ::testing::ValuesIn(Groups("brdf")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Clip, DirectMatrix, ::testing::ValuesIn(Groups("clip")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Ashik, DirectMatrix, ::testing::ValuesIn(Groups("ashik")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Medium, DirectMatrix, ::testing::ValuesIn(Groups("medium")), GroupName);
 
 // The issue's report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
@@ -403,6 +409,32 @@ TEST(DirectLight, TransSamplesItsTransmittedLobeSsTimes) {
     EXPECT_NEAR(sd, 0.1045, 0.01);
 }
 
+// A ray between two parallel mirrors in a global medium: a ray's weight
+// falls by exp(-extinction x its parent's length), so fewer reflections stay
+// above -lw (-lr 100: no Russian roulette). Lines of -otv output for one ray
+// from real Radiance 5.4a, `rtrace -h -ab 0 -dr 0 -lr 100 -lw 1e-3 -me E E E
+// -otv` on this scene's octree: 66, 23, 7 and 4 for E = 0, 0.1, 0.5, 1.
+TEST(DirectLight, MediumLowersTheWeightOfRaysBeyondIt) {
+    const std::string path = ::testing::TempDir() + "mirrors_" + std::to_string(getpid()) + ".rad";
+    std::ofstream(path) << "void light lamp 0 0 3 100 100 100\n"
+                           "lamp sphere bulb 0 0 4 0 0 3 .3\n"
+                           "void mirror mr 0 0 3 .9 .9 .9\n"
+                           "mr polygon m1 0 0 12 -1 -5 -5 -1 5 -5 -1 5 5 -1 -5 5\n"
+                           "mr polygon m2 0 0 12 1 -5 -5 1 -5 5 1 5 5 1 5 -5\n";
+    unsetenv("RAYPATH");
+    const std::pair<const char*, int> cases[] = {{"0", 66}, {"0.1", 23}, {"0.5", 7}, {"1", 4}};
+    for (const auto& [e, lines] : cases) {
+        std::istringstream in("0 0 0 1 0 0.001\n");
+        std::ostringstream out, err;
+        const std::vector<std::string> args = {"rtrace", "-h", "-ab", "0", "-dr", "0", "-lr", "100",
+                                               "-lw", "1e-3", "-me", e, e, e, "-otv", path};
+        ASSERT_EQ(rt::Run(args, in, out, err, ProcessEnvironment()), 0) << err.str();
+        const std::string text = out.str();
+        EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), lines) << "-me " << e;
+    }
+    std::remove(path.c_str());
+}
+
 TEST(DirectMatrixData, CoversTheMatrix) {
     // The file is generated; a truncated or missing one must not pass quietly.
     EXPECT_GE(Matrix().size(), 1600u);
@@ -414,6 +446,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("brdf").size(), 5u);
     EXPECT_GE(Groups("clip").size(), 3u);
     EXPECT_GE(Groups("ashik").size(), 6u);
+    EXPECT_GE(Groups("medium").size(), 3u);
 }
 
 }  // namespace

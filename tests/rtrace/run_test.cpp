@@ -237,7 +237,9 @@ TEST(RtraceRun, UnimplementedOptionsWarn) {
     Result r = RunWith({"-h", "-n", "2", "-me", "1", "1", "1", "s.rad"}, "");
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.err.find("multiprocessing"), std::string::npos);  // -n works now
-    EXPECT_NE(r.err.find("rtrace: warning - participating medium"), std::string::npos);
+    EXPECT_EQ(r.err.find("participating medium"), std::string::npos);  // -me works now
+    r = RunWith({"-h", "-ap", "x.pm", "s.rad"}, "");
+    EXPECT_NE(r.err.find("rtrace: warning - photon mapping"), std::string::npos);
 }
 
 TEST(RtraceRun, ErrorFileGetsBannerAndMessages) {
