@@ -137,12 +137,11 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
             const Vec3 h = pnorm + (f.u * s.cosp + f.v * s.sinp) * s.d;
             const Vec3 sdir = ray.dir - h * (2.0 * Dot(h, ray.dir) / (1.0 + s.d * s.d));
             if (Dot(sdir, ray.ron) <= kFtiny) continue;
-            TracedRay child;
-            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
-            child.dir = Normalize(sdir);
-            tree.Trace(ts, child);
-            Rgb c = child.rcol * child.rcoef;
-            if (n > 1) c *= 2.0 / (1.0 + ray.rod / Dot(child.dir, ray.ron));
+            Vec3 unit;
+            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir, &unit);
+            if (!value) break;
+            Rgb c = *value;
+            if (n > 1) c *= 2.0 / (1.0 + ray.rod / Dot(unit, ray.ron));
             sum += c;
             ++done;
         }
@@ -159,11 +158,9 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
             const FacetSample s = DrawFacet(f, setup.shading.specular.sampling, ts.rng);
             const Vec3 sdir = prdir + (f.u * s.cosp + f.v * s.sinp) * s.d;
             if (Dot(sdir, ray.ron) >= -kFtiny) continue;
-            TracedRay child;
-            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
-            child.dir = Normalize(sdir);
-            tree.Trace(ts, child);
-            ray.rcol += child.rcol * child.rcoef;
+            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
+            if (!value) break;
+            ray.rcol += *value;
             ++done;
         }
     }
@@ -285,11 +282,9 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
             const Vec3 h = u * (cosph * sinth) + v * (sinph * sinth) + pnorm * costh;
             const Vec3 sdir = ray.dir - h * (2.0 * Dot(h, ray.dir));
             if (Dot(sdir, ray.ron) <= kFtiny) continue;
-            TracedRay child;
-            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
-            child.dir = Normalize(sdir);  // unit already, but for rounding
-            tree.Trace(ts, child);
-            ray.rcol += child.rcol * child.rcoef;
+            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
+            if (!value) break;
+            ray.rcol += *value;
             ++done;
         }
     }

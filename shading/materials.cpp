@@ -190,12 +190,11 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
             Vec3 h = pnorm + (u * std::cos(phi) + v * std::sin(phi)) * d;
             Vec3 sdir = ray.dir - h * (2.0 * Dot(h, ray.dir) / (1.0 + d * d));
             if (Dot(sdir, ray.ron) <= kFtiny) continue;
-            TracedRay child;
-            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
-            child.dir = Normalize(sdir);
-            tree.Trace(ts, child);
-            Rgb c = child.rcol * child.rcoef;
-            if (n > 1) c *= 2.0 / (1.0 + ray.rod / std::max(Dot(child.dir, pnorm), kFtiny));
+            Vec3 unit;
+            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir, &unit);
+            if (!value) break;
+            Rgb c = *value;
+            if (n > 1) c *= 2.0 / (1.0 + ray.rod / std::max(Dot(unit, pnorm), kFtiny));
             sum += c;
             ++done;
         }
@@ -220,11 +219,9 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
             double d = r2 <= kFtiny ? 1.0 : std::sqrt(alpha2 * -std::log(r2));
             Vec3 sdir = prdir + (u * std::cos(phi) + v * std::sin(phi)) * d;
             if (Dot(sdir, ray.ron) >= -kFtiny) continue;
-            TracedRay child;
-            if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) break;
-            child.dir = Normalize(sdir);
-            tree.Trace(ts, child);
-            ray.rcol += child.rcol * child.rcoef;
+            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
+            if (!value) break;
+            ray.rcol += *value;
             ++done;
         }
     }
@@ -517,6 +514,17 @@ void ShadeAntimatter(const RayTree& tree, ThreadState& ts, TracedRay& ray, const
 }
 
 }  // namespace
+
+std::optional<Rgb> TraceSpecularSample(const RayTree& tree, ThreadState& ts,
+                                       const TracedRay& ray, const Rgb& coef, const Vec3& dir,
+                                       Vec3* unit) {
+    TracedRay child;
+    if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) return std::nullopt;
+    child.dir = Normalize(dir);
+    if (unit) *unit = child.dir;
+    tree.Trace(ts, child);
+    return child.rcol * child.rcoef;
+}
 
 int LobeSamples(const ShadingSetup& setup, const TracedRay& ray, const Rgb& coef) {
     if (setup.shading.specular.sampling <= 1.5) return 1;

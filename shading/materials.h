@@ -7,6 +7,8 @@
 // DirectLight and IndirectLight for the light at its point.
 #pragma once
 
+#include <optional>
+
 #include "core/vecmath.h"
 #include "scene/scene.h"
 #include "shading/ray_tree.h"
@@ -66,6 +68,13 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
 void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 /// BRTDfunc (m_brdf.c's m_brdf()), in brdf.cpp.
 void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
+/// One sampled specular ray of coefficient `coef` toward `dir` (made unit
+/// here, and returned in `*unit` if given): its value times its
+/// coefficient; none when the ray tree refuses it (rayorigin()'s limits).
+std::optional<Rgb> TraceSpecularSample(const RayTree& tree, ThreadState& ts,
+                                       const TracedRay& ray, const Rgb& coef, const Vec3& dir,
+                                       Vec3* unit = nullptr);
 
 /// Sample rays a rough specular lobe of coefficient `coef` gets: one, or
 /// with -ss above 1.5 about -ss times the ray's weight, each kept above -lw

@@ -19,7 +19,7 @@ import subprocess
 
 from generate_aniso import BALL, LAMPS, PLANE, RING, SKY
 from generate_patterns import BIN, ENV, radiance
-from matrix_data import LIT_BOX, run_and_write
+from matrix_data import LIT_BOX, fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -45,19 +45,12 @@ ORIENTATIONS = {
 }
 
 
-def write(name, text):
-    with open(os.path.join(OUT, name), "w") as f:
-        f.write(text)
-
-
 def material(kind, orient, modifier="void"):
     return modifier + " " + MATERIALS[kind].format(u=ORIENTATIONS[orient]) + "\n"
 
 
 def main():
-    os.makedirs(OUT, exist_ok=True)
-    for f in os.listdir(OUT):
-        os.remove(os.path.join(OUT, f))
+    write = fresh_folder(OUT)
     runs = []  # (group, name, files, rays, repeat, options, check)
     write("down.rays", "1 2 5 0.6 0 -0.8\n0 0 5 0 0 -1\n-3 4 2 0.3 -0.2 -1\n"
                        "2.5 -1 7 0 0 -1\n0 0 5 -0.8 0 -0.6\n0.5 -3 3 -0.1 0.6 -0.8\n"

@@ -19,7 +19,7 @@ import os
 import subprocess
 
 from generate_patterns import BIN, ENV, radiance
-from matrix_data import run_and_write
+from matrix_data import fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -61,15 +61,8 @@ FLOOR = "grey polygon floor 0 0 12 -5 -5 -1  5 -5 -1  5 5 -1  -5 5 -1\n"
 HOLE = box("hole", "cut", (-.3, -.5, 0), (.3, .5, 1))
 
 
-def write(name, text):
-    with open(os.path.join(OUT, name), "w") as f:
-        f.write(text)
-
-
 def main():
-    os.makedirs(OUT, exist_ok=True)
-    for f in os.listdir(OUT):
-        os.remove(os.path.join(OUT, f))
+    write = fresh_folder(OUT)
     runs = []  # (group, name, files, rays, repeat, options, check)
     # From the room (x > 0) through the cut and beside it, from outside
     # back in, along the cut's edges, and down through it to the floor.

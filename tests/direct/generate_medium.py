@@ -16,7 +16,7 @@
 import os
 
 from generate_patterns import radiance
-from matrix_data import run_and_write
+from matrix_data import fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -45,15 +45,8 @@ BLOCK = ("void light lamp 0 0 3 100 100 100\nlamp sphere bulb 0 0 4 0 0 6 .5\n"
                  ("5764", "-1 -1 2  1 -1 2  1 1 2  -1 1 2"))))
 
 
-def write(name, text):
-    with open(os.path.join(OUT, name), "w") as f:
-        f.write(text)
-
-
 def main():
-    os.makedirs(OUT, exist_ok=True)
-    for f in os.listdir(OUT):
-        os.remove(os.path.join(OUT, f))
+    write = fresh_folder(OUT)
     runs = []  # (group, name, files, rays, repeat, options, check)
     write("room.rad", ROOM)
     write("room_sun.rad", ROOM + SUN)

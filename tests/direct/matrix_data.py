@@ -7,6 +7,19 @@ import sys
 import tempfile
 
 
+def fresh_folder(out):
+    """Creates `out` (emptied if it exists) and returns write(name, text),
+    which writes a file into it."""
+    os.makedirs(out, exist_ok=True)
+    for f in os.listdir(out):
+        os.remove(os.path.join(out, f))
+
+    def write(name, text):
+        with open(os.path.join(out, name), "w") as f:
+            f.write(text)
+    return write
+
+
 def mean_and_sem(rows, rays, repeat):
     """Per input ray: the mean of its `repeat` output rows, and the standard
     error of each mean."""
