@@ -55,8 +55,8 @@ std::ostream& operator<<(std::ostream& os, const Hit& hit);
 /// trans with a specular transmission and no roughness, it is a mirror whose
 /// alternate material transmits, it has no material but modifiers (a hole),
 /// a mixture is among its modifiers, it is antimatter, or antimatter clips
-/// its modifier (passed by rays inside the antimatter). A shadow ray that meets any other
-/// surface returns black (back faces visible).
+/// its modifier (passed by rays inside the antimatter). A shadow ray that
+/// meets any other surface returns black (back faces visible).
 bool TransmitsShadowRays(const Scene& scene, const Surface& surface);
 
 /// The surfaces an occlusion query looks at. shading/ follows a shadow ray

@@ -240,7 +240,8 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     // The specular colour rises toward white at grazing views (Schlick).
     Rgb scolor = p.specular;
     const bool hasSpec = Bright(scolor) > kFtiny;
-    const bool belowThreshold = hasSpec && setup.shading.specular.threshold >= Bright(scolor) - kFtiny;
+    const bool belowThreshold =
+        hasSpec && setup.shading.specular.threshold >= Bright(scolor) - kFtiny;
     if (hasSpec) scolor += (Rgb(1, 1, 1) - scolor) * SchlickFresnel(pdot);
     // u and v (getacoords_as()). Without a direction in the surface (u along
     // the normal, or zero after a math error) Radiance 5.4a makes the lobe
@@ -276,7 +277,8 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
             const double inv = 1.0 / std::sqrt(cosph * cosph + sinph * sinph);
             cosph *= inv;
             sinph *= inv;
-            const double costh = std::pow(r1, 1.0 / (up * cosph * cosph + vp * sinph * sinph + 1.0));
+            const double costh =
+                std::pow(r1, 1.0 / (up * cosph * cosph + vp * sinph * sinph + 1.0));
             if (costh <= kFtiny) continue;
             const double sinth = std::sqrt(1.0 - costh * costh);
             const Vec3 h = u * (cosph * sinth) + v * (sinph * sinth) + pnorm * costh;
