@@ -20,8 +20,6 @@
 namespace rt {
 namespace {
 
-/// Attempts per rough specular sample before giving up (Radiance's MAXITER).
-constexpr int kMaxSpecularTries = 10;
 
 /// The surface's u and v directions and slopes at this hit (getacoords()).
 struct AnisoFrame {
@@ -85,13 +83,7 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     const ShadingSetup& setup = tree.setup();
     const AnisoParams& p = std::get<AnisoParams>(m.params);
     const bool isTrans = m.type == MaterialType::Trans2;
-    if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible) {
-            tree.PassThrough(ts, ray);
-            return;
-        }
-        ray.FlipSurface();
-    }
+    if (!FaceTheRay(tree, ts, ray)) return;
     const bool textured = ray.Textured();
     Vec3 pnorm = ray.ron;
     double pdot = ray.rod;
@@ -153,16 +145,12 @@ void ShadeAniso(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         const Rgb lobe = mcolor * tspec;
         const int n = LobeSamples(setup, ray, lobe);
         const Rgb coef = lobe / double(n);
-        int tries = 0, done = 0;
-        for (; done < n && tries < kMaxSpecularTries * n; ++tries) {
+        AddLobeSamples(tree, ts, ray, coef, n, [&]() -> std::optional<Vec3> {
             const FacetSample s = DrawFacet(f, setup.shading.specular.sampling, ts.rng);
             const Vec3 sdir = prdir + (f.u * s.cosp + f.v * s.sinp) * s.d;
-            if (Dot(sdir, ray.ron) >= -kFtiny) continue;
-            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
-            if (!value) break;
-            ray.rcol += *value;
-            ++done;
-        }
+            if (Dot(sdir, ray.ron) >= -kFtiny) return std::nullopt;
+            return sdir;
+        });
     }
 
     // Direct light's coefficient per source sample (Radiance's diraniso()).
@@ -225,13 +213,7 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     if (ray.crtype & kShadowRay) return;  // opaque to shadow rays
     const ShadingSetup& setup = tree.setup();
     const AshikParams& p = std::get<AshikParams>(m.params);
-    if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible) {
-            tree.PassThrough(ts, ray);
-            return;
-        }
-        ray.FlipSurface();
-    }
+    if (!FaceTheRay(tree, ts, ray)) return;
     Vec3 pnorm = ray.ron;
     double pdot = ray.rod;
     if (ray.Textured()) pdot = PerturbedNormal(setup.scene, ts, ray, pnorm);
@@ -265,7 +247,7 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     if (hasSpec && !belowThreshold) {
         const int n = LobeSamples(setup, ray, scolor);
         const Rgb coef = scolor / double(n);
-        for (int tries = 0, done = 0; done < n && tries < kMaxSpecularTries * n; ++tries) {
+        AddLobeSamples(tree, ts, ray, coef, n, [&]() -> std::optional<Vec3> {
             const double phi = 2.0 * kPi * ts.rng.Uniform();
             const double r1 = ts.rng.Uniform();
             // The azimuth of Ashikhmin and Shirley's sampling, tan φ =
@@ -279,16 +261,13 @@ void ShadeAshik(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
             sinph *= inv;
             const double costh =
                 std::pow(r1, 1.0 / (up * cosph * cosph + vp * sinph * sinph + 1.0));
-            if (costh <= kFtiny) continue;
+            if (costh <= kFtiny) return std::nullopt;
             const double sinth = std::sqrt(1.0 - costh * costh);
             const Vec3 h = u * (cosph * sinth) + v * (sinph * sinth) + pnorm * costh;
             const Vec3 sdir = ray.dir - h * (2.0 * Dot(h, ray.dir));
-            if (Dot(sdir, ray.ron) <= kFtiny) continue;
-            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
-            if (!value) break;
-            ray.rcol += *value;
-            ++done;
-        }
+            if (Dot(sdir, ray.ron) <= kFtiny) return std::nullopt;
+            return sdir;
+        });
     }
     // Direct light's coefficient per source sample (dirashik()).
     auto coefficient = [&](const Vec3& ldir, double omega) {

@@ -38,13 +38,7 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
     if (ray.crtype & kShadowRay) return;  // "always a shadow"
     const ShadingSetup& setup = tree.setup();
     const BrdfParams& p = std::get<BrdfParams>(m.params);
-    if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible) {
-            tree.PassThrough(ts, ray);
-            return;
-        }
-        ray.FlipSurface();
-    }
+    if (!FaceTheRay(tree, ts, ray)) return;
     const bool transmits = m.type == MaterialType::TransFunc || m.type == MaterialType::TransData;
     const double rspec = p.specularity;
     const double trans = transmits ? p.transmissivity * (1.0 - rspec) : 0.0;

@@ -25,8 +25,6 @@ namespace {
 // specularity it is applied to.
 double FresnelEstimate(double cosine) { return std::exp(-5.85 * cosine) - 0.00287989916; }
 constexpr double kFresnelThreshold = 0.017999;
-/// Attempts per rough specular sample before giving up (Radiance's MAXITER).
-constexpr int kMaxSpecularTries = 10;
 
 }  // namespace
 
@@ -209,7 +207,7 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         const Rgb coef = lobe / double(n);
         const Vec3 u = Perpendicular(pnorm);
         const Vec3 v = Cross(pnorm, u);
-        for (int tries = 0, done = 0; done < n && tries < kMaxSpecularTries * n; ++tries) {
+        AddLobeSamples(tree, ts, ray, coef, n, [&]() -> std::optional<Vec3> {
             double phi = 2.0 * kPi * ts.rng.Uniform();
             double r2 = ts.rng.Uniform();
             // -ss below 1 narrows the lobe as for reflection; at 1, 1 - r2
@@ -218,12 +216,9 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
             if (ss >= 0 && ss < 1.0) r2 = 1.0 - ss * r2;
             double d = r2 <= kFtiny ? 1.0 : std::sqrt(alpha2 * -std::log(r2));
             Vec3 sdir = prdir + (u * std::cos(phi) + v * std::sin(phi)) * d;
-            if (Dot(sdir, ray.ron) >= -kFtiny) continue;
-            const auto value = TraceSpecularSample(tree, ts, ray, coef, sdir);
-            if (!value) break;
-            ray.rcol += *value;
-            ++done;
-        }
+            if (Dot(sdir, ray.ron) >= -kFtiny) return std::nullopt;
+            return sdir;
+        });
     }
 
     // Direct light's coefficient per source sample (Radiance's dirnorm()).
@@ -358,13 +353,7 @@ void ShadeMirror(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
 
 void ShadeGlass(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
     const ShadingSetup& setup = tree.setup();
-    if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible) {
-            tree.PassThrough(ts, ray);
-            return;
-        }
-        ray.FlipSurface();
-    }
+    if (!FaceTheRay(tree, ts, ray)) return;
     const GlassParams& p = std::get<GlassParams>(m.params);
     const double n = p.index;
     // Only transmission is patterned (below); reflection keeps the pane's colour.

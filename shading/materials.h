@@ -69,12 +69,47 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
 /// BRTDfunc (m_brdf.c's m_brdf()), in brdf.cpp.
 void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// Radiance's back-face rule for materials shaded from either side: a ray
+/// meeting the surface's back is passed straight through with -bv-, and
+/// otherwise the surface is turned to face it. False when the ray was
+/// passed: nothing is left to shade. Inline: it runs at every such hit.
+inline bool FaceTheRay(const RayTree& tree, ThreadState& ts, TracedRay& ray) {
+    if (ray.rod >= 0.0) return true;
+    if (!tree.setup().shading.backfaceVisible) {
+        tree.PassThrough(ts, ray);
+        return false;
+    }
+    ray.FlipSurface();
+    return true;
+}
+
+/// Attempts per rough specular sample before giving up (Radiance's MAXITER).
+inline constexpr int kMaxSpecularTries = 10;
+
+/// Adds the sampled rays of a rough specular lobe to the ray's value
+/// (Radiance's sampling loops without a per-sample weight): `n` samples of
+/// coefficient `coef` each, directions from `draw()` (none: the sample was
+/// rejected and is drawn again), at most kMaxSpecularTries·n draws; stops
+/// early if the ray tree refuses a ray.
 /// One sampled specular ray of coefficient `coef` toward `dir` (made unit
 /// here, and returned in `*unit` if given): its value times its
 /// coefficient; none when the ray tree refuses it (rayorigin()'s limits).
 std::optional<Rgb> TraceSpecularSample(const RayTree& tree, ThreadState& ts,
                                        const TracedRay& ray, const Rgb& coef, const Vec3& dir,
                                        Vec3* unit = nullptr);
+
+template <class Draw>
+inline void AddLobeSamples(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Rgb& coef,
+                           int n, Draw&& draw) {
+    for (int tries = 0, done = 0; done < n && tries < kMaxSpecularTries * n; ++tries) {
+        const std::optional<Vec3> dir = draw();
+        if (!dir) continue;
+        const auto value = TraceSpecularSample(tree, ts, ray, coef, *dir);
+        if (!value) break;
+        ray.rcol += *value;
+        ++done;
+    }
+}
 
 /// Sample rays a rough specular lobe of coefficient `coef` gets: one, or
 /// with -ss above 1.5 about -ss times the ray's weight, each kept above -lw

@@ -102,6 +102,10 @@ TEST(BuildScene, FunctionMaterialErrorsAreOneLineAtLoad) {
               "t.rad:1: metal2 \"m\": bad number of real arguments");
     EXPECT_EQ(BuildError("void trans2 m 3 1 0 0 0 8 .5 .5 .5 .05 .1 .1 .5 .5\n"),
               "t.rad:1: trans2 \"m\": too few string arguments");
+    EXPECT_EQ(BuildError("void ashik2 m 4 1 0 0 . 0 7 .3 .3 .3 .2 .2 .2 10\n"),
+              "t.rad:1: ashik2 \"m\": bad number of real arguments");
+    EXPECT_EQ(BuildError("void ashik2 m 3 1 0 0 0 8 .3 .3 .3 .2 .2 .2 10 10\n"),
+              "t.rad:1: ashik2 \"m\": too few string arguments");
     EXPECT_EQ(BuildError("void plasfunc m 1 refl 0 4 .5 .5 .5 .5\n"),
               "t.rad:1: bad number of arguments for plasfunc \"m\"");
     EXPECT_EQ(BuildError("void transfunc m 2 refl . 0 5 .5 .5 .5 .5 .5\n"),
