@@ -352,21 +352,35 @@ INSTANTIATE_TEST_SUITE_P(Clip, DirectMatrix, ::testing::ValuesIn(Groups("clip"))
 INSTANTIATE_TEST_SUITE_P(Ashik, DirectMatrix, ::testing::ValuesIn(Groups("ashik")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Medium, DirectMatrix, ::testing::ValuesIn(Groups("medium")), GroupName);
 
+// rtrace (this process's rt::Run) with `options` on `scene`, written to a
+// temporary file, and `rays` on standard input, RAYPATH unset (lazyrad's own
+// function files). Fails the test unless it exits 0; returns its output.
+std::string RunOnScene(const std::string& scene, const std::vector<std::string>& options,
+                       const std::string& rays) {
+    const std::string path = ::testing::TempDir() + "scene_" + std::to_string(getpid()) + ".rad";
+    std::ofstream(path) << scene;
+    unsetenv("RAYPATH");
+    std::vector<std::string> args = {"rtrace", "-h"};
+    args.insert(args.end(), options.begin(), options.end());
+    args.push_back(path);
+    std::istringstream in(rays);
+    std::ostringstream out, err;
+    const int status = rt::Run(args, in, out, err, ProcessEnvironment());
+    std::remove(path.c_str());
+    EXPECT_EQ(status, 0) << err.str();
+    return out.str();
+}
+
 // The report: a floor under a light sphere, nothing transmitting.
 // Real Radiance 5.4a prints 9.839112e-01 for each channel.
 TEST(DirectLight, FloorUnderSphereBulb) {
-    const std::string path = ::testing::TempDir() + "sphere_bulb_" + std::to_string(getpid()) + ".rad";
-    std::ofstream(path) << "void plastic wall 0 0 5 .5 .5 .5 0 0\n"
-                           "void light bright 0 0 3 5 5 5\n"
-                           "bright sphere bulb 0 0 4 0 0 1 .25\n"
-                           "wall polygon floor 0 0 12 -3 -3 0  3 -3 0  3 3 0  -3 3 0\n";
-    const std::vector<std::string> args = {"rtrace", "-h", "-I", "-ab", "0", "-ov", path};
-    std::istringstream in("0 0 0.001 0 0 1\n");
-    std::ostringstream out, err;
-    ASSERT_EQ(rt::Run(args, in, out, err, ProcessEnvironment()), 0) << err.str();
-    std::remove(path.c_str());
-    const auto v = Words(out.str());
-    ASSERT_EQ(v.size(), 3u) << out.str();
+    const std::string out = RunOnScene("void plastic wall 0 0 5 .5 .5 .5 0 0\n"
+                                       "void light bright 0 0 3 5 5 5\n"
+                                       "bright sphere bulb 0 0 4 0 0 1 .25\n"
+                                       "wall polygon floor 0 0 12 -3 -3 0  3 -3 0  3 3 0  -3 3 0\n",
+                                       {"-I", "-ab", "0", "-ov"}, "0 0 0.001 0 0 1\n");
+    const auto v = Words(out);
+    ASSERT_EQ(v.size(), 3u) << out;
     for (const auto& w : v) EXPECT_NEAR(std::stod(w), 0.9839112, 1e-3 * 0.9839112);
 }
 
@@ -377,23 +391,15 @@ TEST(DirectLight, FloorUnderSphereBulb) {
 // repeats of the ray): -ss 4 mean 0.32125 ± 0.00074, standard deviation
 // 0.1045; -ss 1 mean 0.32172 ± 0.00147, deviation 0.2077.
 TEST(DirectLight, TransSamplesItsTransmittedLobeSsTimes) {
-    const std::string path = ::testing::TempDir() + "trans_lobe_" + std::to_string(getpid()) + ".rad";
-    std::ofstream(path) << "void colorfunc stripes 4 1+sin(8*Px) 1+cos(6*Py) 1.5 . 0 0\n"
-                           "stripes glow below 0 0 4 1 1 1 0\n"
-                           "below polygon gl 0 0 12 -9 -9 -1 9 -9 -1 9 9 -1 -9 9 -1\n"
-                           "void trans tr 0 0 7 .8 .7 .6 0 .15 .6 .7\n"
-                           "tr polygon p 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n";
-    unsetenv("RAYPATH");
     constexpr int kRepeats = 20000;
     std::string rays;
     for (int k = 0; k < kRepeats; ++k) rays += "0.1 0.2 2 0.1 0 -1\n";
-    std::istringstream in(rays);
-    std::ostringstream out, err;
-    const std::vector<std::string> args = {"rtrace", "-h", "-ab", "0", "-u+", "-ss", "4",
-                                           "-st", "0", "-ov", path};
-    ASSERT_EQ(rt::Run(args, in, out, err, ProcessEnvironment()), 0) << err.str();
-    std::remove(path.c_str());
-    std::istringstream lines(out.str());
+    std::istringstream lines(RunOnScene("void colorfunc stripes 4 1+sin(8*Px) 1+cos(6*Py) 1.5 . 0 0\n"
+                                        "stripes glow below 0 0 4 1 1 1 0\n"
+                                        "below polygon gl 0 0 12 -9 -9 -1 9 -9 -1 9 9 -1 -9 9 -1\n"
+                                        "void trans tr 0 0 7 .8 .7 .6 0 .15 .6 .7\n"
+                                        "tr polygon p 0 0 12 -5 -5 0 5 -5 0 5 5 0 -5 5 0\n",
+                                        {"-ab", "0", "-u+", "-ss", "4", "-st", "0", "-ov"}, rays));
     double sum = 0, sum2 = 0;
     int n = 0;
     for (std::string line; std::getline(lines, line); ++n) {
@@ -415,24 +421,18 @@ TEST(DirectLight, TransSamplesItsTransmittedLobeSsTimes) {
 // from real Radiance 5.4a, `rtrace -h -ab 0 -dr 0 -lr 100 -lw 1e-3 -me E E E
 // -otv` on this scene's octree: 66, 23, 7 and 4 for E = 0, 0.1, 0.5, 1.
 TEST(DirectLight, MediumLowersTheWeightOfRaysBeyondIt) {
-    const std::string path = ::testing::TempDir() + "mirrors_" + std::to_string(getpid()) + ".rad";
-    std::ofstream(path) << "void light lamp 0 0 3 100 100 100\n"
-                           "lamp sphere bulb 0 0 4 0 0 3 .3\n"
-                           "void mirror mr 0 0 3 .9 .9 .9\n"
-                           "mr polygon m1 0 0 12 -1 -5 -5 -1 5 -5 -1 5 5 -1 -5 5\n"
-                           "mr polygon m2 0 0 12 1 -5 -5 1 -5 5 1 5 5 1 5 -5\n";
-    unsetenv("RAYPATH");
+    const std::string scene = "void light lamp 0 0 3 100 100 100\n"
+                              "lamp sphere bulb 0 0 4 0 0 3 .3\n"
+                              "void mirror mr 0 0 3 .9 .9 .9\n"
+                              "mr polygon m1 0 0 12 -1 -5 -5 -1 5 -5 -1 5 5 -1 -5 5\n"
+                              "mr polygon m2 0 0 12 1 -5 -5 1 -5 5 1 5 5 1 5 -5\n";
     const std::pair<const char*, int> cases[] = {{"0", 66}, {"0.1", 23}, {"0.5", 7}, {"1", 4}};
     for (const auto& [e, lines] : cases) {
-        std::istringstream in("0 0 0 1 0 0.001\n");
-        std::ostringstream out, err;
-        const std::vector<std::string> args = {"rtrace", "-h", "-ab", "0", "-dr", "0", "-lr", "100",
-                                               "-lw", "1e-3", "-me", e, e, e, "-otv", path};
-        ASSERT_EQ(rt::Run(args, in, out, err, ProcessEnvironment()), 0) << err.str();
-        const std::string text = out.str();
+        const std::string text = RunOnScene(scene, {"-ab", "0", "-dr", "0", "-lr", "100", "-lw",
+                                                    "1e-3", "-me", e, e, e, "-otv"},
+                                            "0 0 0 1 0 0.001\n");
         EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), lines) << "-me " << e;
     }
-    std::remove(path.c_str());
 }
 
 TEST(DirectMatrixData, CoversTheMatrix) {
