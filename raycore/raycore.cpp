@@ -81,6 +81,8 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Illum:
         case MaterialType::BRTDFunc:  // its transmission expressions (m_brdf())
         case MaterialType::Antimatter:  // passed, the ray's clipped modifiers changed
+        case MaterialType::Bsdf:        // a proxy passes them (its thickness may vary)
+        case MaterialType::ABsdf:       // its straight-through part passes them
             return true;
         case MaterialType::Mirror:
             // A shadow ray meeting its front is shaded with the alternate.

@@ -50,6 +50,7 @@ enum class MaterialFunction {
     Brdf,         // plasfunc, metfunc, transfunc: `func funcfile [xf]`
     BrdfData,     // plasdata, metdata, transdata: `func datafile funcfile x1…xn [xf]`
     Brtd,         // BRTDfunc: six expressions, three functions, `funcfile [xf]`
+    Bsdf,         // BSDF: `thick xmlfile ux uy uz funcfile [xf]`; aBSDF without thick
 };
 
 struct MaterialSpec {
@@ -86,6 +87,8 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     {"metdata", MaterialType::MetData, 4, kAnyCount, 0, MaterialFunction::BrdfData},
     {"transdata", MaterialType::TransData, 6, kAnyCount, 0, MaterialFunction::BrdfData},
     {"BRTDfunc", MaterialType::BRTDFunc, 9, kAnyCount, 0, MaterialFunction::Brtd},
+    {"BSDF", MaterialType::Bsdf, 0, 9, 0, MaterialFunction::Bsdf},
+    {"aBSDF", MaterialType::ABsdf, 0, 9, 0, MaterialFunction::Bsdf},
     // Its strings are modifier names (checked in SetClipped); m_clip.c reads
     // no real arguments and ignores any.
     {"antimatter", MaterialType::Antimatter, 0, kAnyCount, kAnyCount},
@@ -160,6 +163,10 @@ constexpr PatternSpec kPatternSpecs[] = {
 /// coordinates, transform).
 constexpr PatternSpec kOrientationSpec = {"orientation", PatternType::Orientation,
                                           ModifierKind::Texture, 0, 3};
+/// BSDF's thickness and up vector (aBSDF: kOrientationSpec), the strings
+/// without the BSDF file's name.
+constexpr PatternSpec kBsdfFrameSpec = {"bsdf", PatternType::Orientation, ModifierKind::Texture,
+                                        0, 4};
 constexpr PatternSpec kBrdfSpec = {"brdf", PatternType::Brdf, ModifierKind::Pattern, 0, 0, 1, 0};
 constexpr PatternSpec kBrdfDataSpec = {"brdfdata", PatternType::Brdf, ModifierKind::Pattern,
                                        0, -1, 1, 1, false, true};
@@ -518,7 +525,11 @@ private:
         }
         const int modifier = ResolveModifier(object);
         const int nreals = static_cast<int>(object.rargs.size());
-        if (spec->function == MaterialFunction::Orientation) {
+        if (spec->function == MaterialFunction::Bsdf) {
+            // m_bsdf.c's check, at the first ray there; here when loading.
+            const std::size_t strings = spec->type == MaterialType::Bsdf ? 6 : 5;
+            if (object.sargs.size() < strings || nreals > 9 || nreals % 3 != 0) BadArgs(object);
+        } else if (spec->function == MaterialFunction::Orientation) {
             // Radiance's own words for these (m_aniso.c, getfunc()).
             if (nreals < spec->minReals || nreals > spec->maxReals) {
                 Fail(object, "bad number of real arguments");
@@ -548,6 +559,8 @@ private:
             }
             scene_.patterns.push_back(MakePattern(object, kOrientationSpec));
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
+        } else if (spec->function == MaterialFunction::Bsdf) {
+            SetBsdf(object, material);
         } else if (spec->function != MaterialFunction::None) {
             // The BRDF variables the function may read, before its file.
             Functions().DefineBrdfVariables();
@@ -576,6 +589,20 @@ private:
         material.patterns = MaterialChain(object, modifier);
         scene_.materials.push_back(std::move(material));
         Define(object.name, ModifierDef{static_cast<int>(scene_.materials.size()) - 1, -1, modifier});
+    }
+
+    /// BSDF and aBSDF: the file (loaded once per scene) and the frame's
+    /// expressions, read as an orientation's once the file's name is out.
+    void SetBsdf(const SceneObject& object, Material& material) {
+        const bool thick = material.type == MaterialType::Bsdf;
+        const std::size_t fileAt = thick ? 1 : 0;
+        auto& p = std::get<BsdfParams>(material.params);
+        p.data = bsdfFiles_.Load(object.sargs[fileAt], object.loc.ToString() + ": " + Describe(object));
+        p.proxy = thick && object.sargs[0] != "0";
+        SceneObject frame = object;
+        frame.sargs.erase(frame.sargs.begin() + static_cast<std::ptrdiff_t>(fileAt));
+        scene_.patterns.push_back(MakePattern(frame, thick ? kBsdfFrameSpec : kOrientationSpec));
+        material.function = static_cast<int>(scene_.patterns.size()) - 1;
     }
 
     /// antimatter's strings (m_clip.c): each names a modifier whose surfaces
@@ -1069,6 +1096,7 @@ private:
     /// Per prototype, the placements written inside it.
     std::vector<std::vector<Placement>> prototypePlacements_;
     DataFileCache dataFiles_{searchPath_};
+    BsdfFileCache bsdfFiles_{searchPath_};
     std::shared_ptr<cal::Program> functions_;
     std::vector<ModifierDef> defs_;
     std::unordered_map<std::string, int> byName_;

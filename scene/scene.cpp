@@ -43,6 +43,8 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::BRTDFunc: return "BRTDfunc";
         case MaterialType::Antimatter: return "antimatter";
         case MaterialType::Ashik2: return "ashik2";
+        case MaterialType::Bsdf: return "BSDF";
+        case MaterialType::ABsdf: return "aBSDF";
     }
     return "unknown";
 }
@@ -67,6 +69,15 @@ const char* SurfaceTypeName(SurfaceType type) {
 MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& a) {
     // The builder fills in what antimatter clips; it has no real arguments.
     if (type == MaterialType::Antimatter) return ClipParams{};
+    if (type == MaterialType::Bsdf || type == MaterialType::ABsdf) {
+        // The builder sets the data and the proxy flag.
+        BsdfParams p;
+        p.addedParts = static_cast<int>(a.size() / 3);
+        if (p.addedParts > 0) p.frontDiffuse = Rgb(a[0], a[1], a[2]);
+        if (p.addedParts > 1) p.backDiffuse = Rgb(a[3], a[4], a[5]);
+        if (p.addedParts > 2) p.diffuseTransmission = Rgb(a[6], a[7], a[8]);
+        return p;
+    }
     const Rgb color(a[0], a[1], a[2]);
     switch (type) {
         case MaterialType::Plastic:
@@ -97,6 +108,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::Antimatter: break;
         case MaterialType::Ashik2:
             return AshikParams{color, Rgb(a[3], a[4], a[5]), a[6], a[7]};
+        case MaterialType::Bsdf:
+        case MaterialType::ABsdf: break;  // above
     }
     return NormalParams{};
 }
@@ -104,7 +117,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
 bool IsTransparentType(MaterialType type) {
     // transfunc and transdata are not: Radiance's -i meters them as opaque.
     return type == MaterialType::Trans || type == MaterialType::Trans2 || type == MaterialType::Glass ||
-           type == MaterialType::Dielectric || type == MaterialType::Interface;
+           type == MaterialType::Dielectric || type == MaterialType::Interface ||
+           type == MaterialType::ABsdf;
 }
 
 bool IsLightType(MaterialType type) {

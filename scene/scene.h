@@ -28,6 +28,7 @@
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "scene/data_file.h"
+#include "scene/klems_bsdf.h"
 
 namespace rt {
 
@@ -46,9 +47,10 @@ struct SceneObject {
 enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
-    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter, Ashik2
+    PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter, Ashik2,
+    Bsdf, ABsdf
 };
-inline constexpr std::size_t kMaterialTypeCount = 23;
+inline constexpr std::size_t kMaterialTypeCount = 25;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -123,9 +125,20 @@ struct ClipParams {
     /// the names are resolved as the antimatter is read (Radiance's lastmod()).
     std::vector<int> clipped;
 };
+/// BSDF and aBSDF (0, 3, 6 or 9 reals, m_bsdf.c): the scattering of a
+/// BSDF file (scene/klems_bsdf.h), plus diffuse parts the reals add.
+struct BsdfParams {
+    Rgb frontDiffuse, backDiffuse;   // added reflectances, front and back
+    Rgb diffuseTransmission;         // added transmittance
+    int addedParts = 0;              // how many of the three the reals give
+    std::shared_ptr<const KlemsBsdf> data;  // set by the scene builder
+    /// Radiance's isBSDFproxy(): a BSDF whose thickness is not written "0"
+    /// (what -i and the leak test pass, whatever the thickness evaluates to).
+    bool proxy = false;
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
                                     DielectricParams, AnisoParams, BrdfParams, BrtdParams,
-                                    ClipParams, AshikParams>;
+                                    ClipParams, AshikParams, BsdfParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -166,7 +179,9 @@ struct Material {
     /// Brtd): `rrefl grefl
     /// brefl rtrns gtrns btrns rbrtd gbrtd bbrtd funcfile [xf]`, the six
     /// expressions as values, the three functions in data.functions (slot
-    /// -1 for a name starting with '0': zero, as in Radiance).
+    /// -1 for a name starting with '0': zero, as in Radiance). BSDF: `thick
+    /// ux uy uz funcfile [xf]` (the file's name left out), aBSDF `ux uy uz
+    /// funcfile [xf]` (PatternType::Orientation, four or three values).
     int function = -1;
     FileLoc loc;
 };

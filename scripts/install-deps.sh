@@ -3,7 +3,7 @@
 # quiet when everything is already there. Debian packages only.
 set -euo pipefail
 
-packages=(g++ make cmake libembree-dev libopenexr-dev libpng-dev libgtest-dev libbenchmark-dev)
+packages=(g++ make cmake libembree-dev libopenexr-dev libpng-dev libgtest-dev libbenchmark-dev libpugixml-dev)
 
 missing=()
 for p in "${packages[@]}"; do

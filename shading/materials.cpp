@@ -551,6 +551,8 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeBrtd,        // BRTDfunc
         &ShadeAntimatter,  // antimatter
         &ShadeAshik,       // ashik2
+        &ShadeBsdf,        // BSDF
+        &ShadeBsdf,        // aBSDF
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

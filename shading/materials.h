@@ -69,6 +69,9 @@ void ShadeBrdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
 /// BRTDfunc (m_brdf.c's m_brdf()), in brdf.cpp.
 void ShadeBrtd(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
 
+/// BSDF and aBSDF (m_bsdf.c), in bsdf.cpp.
+void ShadeBsdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m);
+
 /// Radiance's back-face rule for materials shaded from either side: a ray
 /// meeting the surface's back is passed straight through with -bv-, and
 /// otherwise the surface is turned to face it. False when the ray was

@@ -180,11 +180,12 @@ bool Mix(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Pattern& mi
 }
 
 /// The values of modifier `index` (in Scene::patterns) for this ray,
-/// evaluated in `space`, into v (entries it has no value for keep theirs).
+/// evaluated in `space`, into v (as many entries as it has values, at
+/// least 3; entries it has no value for keep theirs).
 /// False after a math error, which a pattern, texture or mixture (`warn`)
 /// reports once per modifier.
 bool EvaluateModifier(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index,
-                      const PatternSpace& space, double v[3], bool warn) {
+                      const PatternSpace& space, double* v, bool warn) {
     const cal::Program& functions = *scene.functions;
     const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
     // Mixtures recurse into ApplyModifiers through ShadeChain, so the
@@ -232,6 +233,20 @@ Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& r
     // texture's displacement, not by an instance's, whose object space the
     // function saw. Only its direction matters.
     return modifier.worldFromPattern.Vector(Vec3(v[0], v[1], v[2]));
+}
+
+BsdfFrame EvaluateBsdfFrame(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index) {
+    const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
+    const PatternSpace space(ray, modifier);
+    double v[4] = {0.0, 0.0, 0.0, 0.0};
+    EvaluateModifier(scene, ts, ray, index, space, v, false);
+    const bool thick = modifier.values.size() == 4;
+    BsdfFrame f;
+    if (thick && std::fabs(v[0]) > kFtiny) f.thickness = v[0];
+    const Transform back = space.RenderFromPattern();
+    f.up = back.Vector(thick ? Vec3(v[1], v[2], v[3]) : Vec3(v[0], v[1], v[2]));
+    f.thickness *= std::fabs(back.scale);
+    return f;
 }
 
 namespace {

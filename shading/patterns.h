@@ -28,6 +28,17 @@ bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
 /// render space, not normalised; zero after a math error.
 Vec3 EvaluateOrientation(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index);
 
+/// A BSDF material's frame at this hit (m_bsdf.c): the thickness (0 for
+/// aBSDF and below FTINY) and the up vector, from frame function `index`
+/// (four values: thickness first; three: aBSDF), both turned and scaled
+/// into render space by the function's transform and the instance's.
+/// Values as computed after a math error, as Radiance uses them.
+struct BsdfFrame {
+    double thickness = 0;
+    Vec3 up;
+};
+BsdfFrame EvaluateBsdfFrame(const Scene& scene, ThreadState& ts, const TracedRay& ray, int index);
+
 /// What a BRDF material's function sees of the point besides the ray
 /// (radiance-functions.md §10.4): NxP…, RdotP, CrP….
 struct BrdfInputs {

@@ -171,7 +171,8 @@ void RayTree::ShadeSurfaceMaterial(ThreadState& ts, TracedRay& ray, const Materi
     if (s_.shading.irradiance == IrradianceMode::AtHit &&
         (ray.crtype & ~(kPrimaryRay | kTransRay)) == 0 && !IsLightType(m.type) &&
         m.type != MaterialType::Antimatter) {
-        if (IsTransparentType(m.type)) {
+        if (IsTransparentType(m.type) ||
+            (m.type == MaterialType::Bsdf && std::get<BsdfParams>(m.params).proxy)) {
             PassThrough(ts, ray);
             return;
         }

@@ -44,6 +44,11 @@
 //   with -av on view rays, shadow rays, -I sensors, -ab 1, the sun; a
 //   dielectric block's absorption over every segment inside, with and
 //   without the global medium), answers in tests/data/medium/expected.txt.
+// - BSDF and aBSDF (tests/direct/generate_bsdf.py: five Klems files, from
+//   both sides under five kinds of source, up vectors, aBSDF's through
+//   peak, proxies, added diffuse reals, a pattern, -bv-, -i, the sampled
+//   rays at -ss 0.5, 1 and 4, -ab 1, errors), answers and the files in
+//   tests/data/bsdf/, RAYPATH that folder.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -158,6 +163,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("clip")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("ashik")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("medium")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("bsdf")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -239,7 +245,7 @@ Outcome RunLazyrad(const MatrixRun& r) {
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
     if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf" ||
-        r.dataset == "clip" || r.dataset == "ashik") {
+        r.dataset == "clip" || r.dataset == "ashik" || r.dataset == "bsdf") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -351,6 +357,7 @@ INSTANTIATE_TEST_SUITE_P(Brdf, DirectMatrix, ::testing::ValuesIn(Groups("brdf"))
 INSTANTIATE_TEST_SUITE_P(Clip, DirectMatrix, ::testing::ValuesIn(Groups("clip")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Ashik, DirectMatrix, ::testing::ValuesIn(Groups("ashik")), GroupName);
 INSTANTIATE_TEST_SUITE_P(Medium, DirectMatrix, ::testing::ValuesIn(Groups("medium")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Bsdf, DirectMatrix, ::testing::ValuesIn(Groups("bsdf")), GroupName);
 
 // rtrace (this process's rt::Run) with `options` on `scene`, written to a
 // temporary file, and `rays` on standard input, RAYPATH unset (lazyrad's own
@@ -447,6 +454,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("clip").size(), 3u);
     EXPECT_GE(Groups("ashik").size(), 6u);
     EXPECT_GE(Groups("medium").size(), 3u);
+    EXPECT_GE(Groups("bsdf").size(), 8u);
 }
 
 }  // namespace

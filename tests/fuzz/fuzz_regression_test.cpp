@@ -27,6 +27,7 @@ extern "C" int FuzzCalEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzOctreeEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzMeshEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzDatafileEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzBsdfEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -90,6 +91,10 @@ TEST(FuzzRegression, MeshCorpusAndRegressions) {
 
 TEST(FuzzRegression, DatafileCorpusAndRegressions) {
     EXPECT_GT(Replay("datafile", &FuzzDatafileEntry), 0u);
+}
+
+TEST(FuzzRegression, BsdfCorpusAndRegressions) {
+    EXPECT_GT(Replay("bsdf", &FuzzBsdfEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 //
 // The function-driven materials (plastic2, metal2, trans2, ashik2, plasfunc,
-// transdata, BRTDfunc) inside a lit room whose window is an antimatter cut
+// transdata, BRTDfunc) and BSDF files (a louvre BSDF, an aBSDF glazing and a
+// BSDF proxy) inside a lit room whose window is an antimatter cut
 // (rays through it carry a clipped set), through the whole indirect
 // calculation: the matrix of tests/direct/ checks them against Radiance at
 // -ab 0 and at -ab 1 without a cache; here they meet the ambient cache with
@@ -27,6 +28,7 @@ using rt::testing::WriteTempFile;
 
 std::string Room() {
     const std::string data = rt::testing::kSourceDir + "/tests/data/brdf/";
+    const std::string bsdf = rt::testing::kSourceDir + "/tests/data/bsdf/";
     const std::string text =
         "void plastic wall 0 0 5 .5 .5 .5 0 0\n"
         "wall polygon floor 0 0 12 -2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1\n"
@@ -52,6 +54,12 @@ std::string Room() {
         "glaze polygon g 0 0 12 -1 -1 .5  1 -1 .5  1 1 .5  -1 1 .5\n"
         "void ashik2 ash 4 1 0 0 . 0 8 .3 .3 .3 .2 .2 .2 60 8\n"
         "ash sphere as1 0 0 4 -1 1 -.7 .3\n"
+        "void BSDF blinds 6 0 " + bsdf + "louvre.xml 0 0 1 . 0 0\n"
+        "blinds polygon h 0 0 12 1.8 .2 -1  1.8 .2 1  1.8 1.2 1  1.8 1.2 -1\n"
+        "void aBSDF frit 5 " + bsdf + "glaze.xml 0 1 0 . 0 0\n"
+        "frit polygon i 0 0 12 -1.5 .6 1.2  -.5 .6 1.2  -.5 1.6 1.2  -1.5 1.6 1.2\n"
+        "void BSDF proxy 6 .05 " + bsdf + "glaze.xml 0 1 0 . 0 3 .05 .05 .05\n"
+        "proxy polygon j 0 0 12 .5 .5 1.5  .5 1.5 1.5  1.5 1.5 1.5  1.5 .5 1.5\n"
         // A window cut in the north wall, a sky beyond it.
         "void antimatter cut 1 wall 0 0\n"
         "cut polygon c1 0 0 12 -.5 1.8 0  .5 1.8 0  .5 1.8 1  -.5 1.8 1\n"
