@@ -227,6 +227,16 @@ void KlemsComponent::FoldProjectedSolidAngle(double psa[2], const Vec3& v1, cons
     if (outPsa > 0 && outPsa < psa[0]) psa[0] = outPsa;
 }
 
+bool KlemsComponent::FiniteTotals() const {
+    for (std::size_t i = 0; i < nin_; ++i) {
+        if (!std::isfinite(forward_[i * (nout_ + 1) + nout_])) return false;
+    }
+    for (std::size_t o = 0; o < nout_; ++o) {
+        if (!std::isfinite(reverse_[o * (nin_ + 1) + nin_])) return false;
+    }
+    return std::isfinite(maxHemi_);
+}
+
 double KlemsComponent::Total(const Vec3& in) const {
     if (const int i = in_.Index(in); i >= 0) return forward_[std::size_t(i) * (nout_ + 1) + nout_];
     if (const int o = out_.Index(in); o >= 0) return reverse_[std::size_t(o) * (nin_ + 1) + nin_];
@@ -476,6 +486,8 @@ private:
             values[at] = v < 0.0 ? 0.0f : static_cast<float>(v);
         }
         target->emplace(in, inSide, out, outSide, std::move(values));
+        // Values so large that their sums overflow would sample nonsense.
+        if (!(*target)->FiniteTotals()) Fail("ScatteringData values too large");
     }
 
     std::string_view text_;

@@ -90,6 +90,9 @@ public:
     /// value is Total(in); nullopt when that is below libBSDF's 1e-7.
     std::optional<Vec3> Sample(const Vec3& in, double x, double j0, double j1) const;
 
+    /// False when some row's or column's total overflowed (absurd values).
+    bool FiniteTotals() const;
+
     double minProjectedSolidAngle() const { return minProjSA_; }
     /// The largest hemispherical total over incident patches, above the
     /// Lambertian part (get_extrema() less extract_diffuse()'s share).
