@@ -22,9 +22,10 @@
 # repeats under a sky that colours every direction); -ab 1; argument errors.
 import math
 import os
+import subprocess
 
 from generate_aniso import LAMPS, PLANE, SKY
-from generate_patterns import radiance
+from generate_patterns import BIN, ENV, radiance
 from matrix_data import LIT_BOX, fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -52,7 +53,8 @@ def patches(rings):
     return out
 
 
-def klems_xml(blocks, basis, rows=False, define=None):
+def klems_xml(blocks, basis, rows=False, define=None, wavelengths=("Solar", "Visible"),
+              digits=5):
     """blocks: {WINDOW direction: matrix[outgoing][incident]} in 1/sr."""
     s = ['<?xml version="1.0" encoding="UTF-8"?>',
          '<WindowElement xmlns="http://windows.lbl.gov" version="1.1">',
@@ -70,7 +72,7 @@ def klems_xml(blocks, basis, rows=False, define=None):
                   '</ThetaBounds>', '</AngleBasisBlock>']
         s.append('</AngleBasis>')
     s.append('</DataDefinition>')
-    for wavelength in ("Solar", "Visible"):
+    for wavelength in wavelengths:
         for direction, m in blocks.items():
             data = [list(r) for r in zip(*m)] if rows else m  # rows: one per incident
             scale = 0.8 if wavelength == "Solar" else 1.0  # Radiance reads Visible only
@@ -81,7 +83,7 @@ def klems_xml(blocks, basis, rows=False, define=None):
                   f'<ColumnAngleBasis>{basis}</ColumnAngleBasis>',
                   f'<RowAngleBasis>{basis}</RowAngleBasis>',
                   '<ScatteringDataType>BTDF</ScatteringDataType>', '<ScatteringData>']
-            s += [", ".join("%.5g" % (v * scale) for v in row) + "," for row in data]
+            s += [", ".join("%.*g" % (digits, v * scale) for v in row) + "," for row in data]
             s += ['</ScatteringData>', '</WavelengthDataBlock>', '</WavelengthData>']
     s += ['</Layer>', '</Optical>', '</WindowElement>']
     return "\n".join(s) + "\n"
@@ -170,6 +172,17 @@ def main():
                   "m " + PLANE)
             runs.append(("bsdfup", name, [f"up_{name}.rad"], "up.rays" if lamp == "sphere"
                          else "down.rays", 1, DET, "exact"))
+    # An instance turning and scaling the louvre (its up vector and a
+    # proxy's thickness follow the instance's transform).
+    write("inst_obj.rad", material("BSDF", "louvre.xml", "1 .2 0 . -rz 30") + "m " + PLANE)
+    with open(os.path.join(OUT, "inst_obj.oct"), "wb") as f:
+        subprocess.run([os.path.join(BIN, "oconv"), "-f", "inst_obj.rad"], stdout=f,
+                       check=True, env=ENV, cwd=OUT)
+    for lamp in ("sphere", "below"):
+        write(f"instance_{lamp}.rad", lamps[lamp] +
+              "void instance i1 9 inst_obj.oct -rz 60 -t .5 .2 0 -s 1.5 0 0\n")
+        runs.append(("bsdfup", f"instance_{lamp}", [f"instance_{lamp}.rad"],
+                     "up.rays" if lamp == "sphere" else "down.rays", 1, DET, "exact"))
     # 3. aBSDF's through peak (view rays and shadow rays pass it), proxies of
     # either sign with detail behind them, added diffuse reals, a pattern,
     # -bv-, -i.
