@@ -212,10 +212,8 @@ void SampleMatrix(const RayTree& tree, ThreadState& ts, TracedRay& ray, BsdfHit&
     unsampled = Rgb();
     const KlemsComponent* c = transmission ? h.ViewTransmission() : h.sd.Reflection(ray.rod > 0.0);
     if (!c) return;
-    bool hasThrough =
-        transmission && !(ray.crtype & (kSpecularRay | kAmbientRay)) && Bright(h.cthru) > kFtiny;
-    double b = 0;
-    if (hasThrough) {
+    double b = 0;  // the share the through ray took
+    if (transmission && !(ray.crtype & (kSpecularRay | kAmbientRay)) && Bright(h.cthru) > kFtiny) {
         // The view ray straight through, with the peak's coefficient.
         TracedRay child;
         if (tree.StartChild(ts, child, ray, kTransRay, &h.cthru)) {
@@ -224,8 +222,6 @@ void SampleMatrix(const RayTree& tree, ThreadState& ts, TracedRay& ray, BsdfHit&
             ray.rcol += child.rcol * child.rcoef;
             ray.rxt = ray.rot + child.EffectiveDistance();
             b = Bright(h.cthru);
-        } else {
-            hasThrough = false;
         }
     }
     if (c->maxHemispherical() - b <= kFtiny) {
