@@ -8,7 +8,7 @@
 #
 #   bench/side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]
 #     JOBS  subset of: floor edges daylit floor_fast mixed floor_fast_oct shelf
-#           (default all)
+#           bsdf_overcast bsdf_sun (default all)
 #
 # Every speed-up is a ratio measured in this run; the absolute times are only
 # for reading the table. Lazyrad-only options can be passed through a wrapper
@@ -19,12 +19,13 @@ write=0 pairs=3
 while getopts "wn:" o; do case $o in w) write=1 ;; n) pairs=$OPTARG ;; *) exit 2 ;; esac; done
 shift $((OPTIND - 1))
 lz=$(realpath "${1:?usage: side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]}")
-jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct shelf}
+jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct shelf bsdf_overcast bsdf_sun}
 sbs=$root/../shared/tools/side-by-side
 [ -x "$sbs" ] || { echo "side_by_side.sh: $sbs not found (needs ../shared)" >&2; exit 2; }
 defaults="-ad 1024 -as 512 -aa .1 -ar 256"
-job() {  # name -> "description|options|scene|points|reference or -"
+job() {  # name -> "description|options|scene|points|reference or -[|folder to run in]"
   local s=$root/scenes
+  local hb="-h -I -aa .1 -ab 2 -ad 2048 -ar 64"  # honeybee's daylight-factor recipe
   case $1 in
     floor) echo "cornell floor, 84 points|-h -I -ab 2 $defaults|$s/cornell/cornell.rad|$s/cornell/floor.pts|$s/cornell/ref/floor_I_ab2.txt" ;;
     edges) echo "cornell edges, 40 points|-h -I -ab 2 $defaults|$s/cornell/cornell.rad|$s/cornell/edges.pts|$s/cornell/ref/edges_I_ab2.txt" ;;
@@ -38,6 +39,11 @@ job() {  # name -> "description|options|scene|points|reference or -"
     # through a virtual source (-dr), in both programs.
     shelf) echo "daylit room with a mirror light shelf, 96 points|-h -I -ab 4 $defaults|$s/shelf_room/shelf_room.rad|$s/daylit_room/workplane.pts|$s/shelf_room/ref/workplane_I_ab4.txt" ;;
     mixed) echo "mixed room (curved, metal, trans, glass, 5 source kinds), 120 points|-h -I -ab 2 $defaults|$s/mixed/mixed.rad|$s/mixed/workplane.pts|-" ;;
+    # The df_room with an exterior venetian blind as a BSDF file, as honeybee
+    # runs such a model: frozen octrees made by Radiance's oconv -f, run in
+    # the scene's folder, where both programs find blinds.xml on RAYPATH.
+    bsdf_overcast) echo "BSDF blinds room, overcast sky, 96 points|$hb|$s/bsdf_room/bsdf_room_overcast.oct|$s/bsdf_room/grid.pts|$s/bsdf_room/ref/grid_I_ab2_sky.txt|$s/bsdf_room" ;;
+    bsdf_sun) echo "BSDF blinds room, sun and sky, 96 points|$hb|$s/bsdf_room/bsdf_room_sun.oct|$s/bsdf_room/grid.pts|$s/bsdf_room/ref/grid_I_ab2_sun_sky.txt|$s/bsdf_room" ;;
     *) echo "side_by_side.sh: unknown job '$1'" >&2; exit 2 ;;
   esac
 }
@@ -47,11 +53,11 @@ table=$(mktemp); log=$(mktemp); trap 'rm -f "$table" "$log"' EXIT
   echo "|---|---|---|---|---|---|"
 } > "$table"
 for name in $jobs; do
-  IFS='|' read -r desc opts scene points ref <<< "$(job "$name")"
+  IFS='|' read -r desc opts scene points ref dir <<< "$(job "$name")"
   echo "== $desc: $opts" >&2
   args=(-n "$pairs")
   [ "$ref" != - ] && args+=(-r "$ref")
-  "$sbs" "${args[@]}" "$lz" "$opts" "$scene" "$points" | tee "$log" >&2
+  (cd "${dir:-.}" && "$sbs" "${args[@]}" "$lz" "$opts" "$scene" "$points") | tee "$log" >&2
   python3 - "$desc" "$opts" "$log" >> "$table" <<'PY'
 import re, sys, statistics as st
 desc, opts, log = sys.argv[1], sys.argv[2], open(sys.argv[3]).read()
