@@ -72,10 +72,9 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
     if (type == MaterialType::Bsdf || type == MaterialType::ABsdf) {
         // The builder sets the data and the proxy flag.
         BsdfParams p;
-        p.addedParts = static_cast<int>(a.size() / 3);
-        if (p.addedParts > 0) p.frontDiffuse = Rgb(a[0], a[1], a[2]);
-        if (p.addedParts > 1) p.backDiffuse = Rgb(a[3], a[4], a[5]);
-        if (p.addedParts > 2) p.diffuseTransmission = Rgb(a[6], a[7], a[8]);
+        if (a.size() >= 3) p.frontDiffuse = Rgb(a[0], a[1], a[2]);
+        if (a.size() >= 6) p.backDiffuse = Rgb(a[3], a[4], a[5]);
+        if (a.size() >= 9) p.diffuseTransmission = Rgb(a[6], a[7], a[8]);
         return p;
     }
     const Rgb color(a[0], a[1], a[2]);

@@ -130,7 +130,6 @@ struct ClipParams {
 struct BsdfParams {
     Rgb frontDiffuse, backDiffuse;   // added reflectances, front and back
     Rgb diffuseTransmission;         // added transmittance
-    int addedParts = 0;              // how many of the three the reals give
     std::shared_ptr<const KlemsBsdf> data;  // set by the scene builder
     /// Radiance's isBSDFproxy(): a BSDF whose thickness is not written "0"
     /// (what -i and the leak test pass, whatever the thickness evaluates to).
@@ -241,7 +240,7 @@ struct Pattern {
 const char* MaterialTypeName(MaterialType type);
 /// Radiance's istransp(): materials a coincident opaque surface wins against,
 /// that -i passes, and that shadow rays may pass (trans, trans2, glass,
-/// dielectric, interface; trans2 in fact never passes shadow rays).
+/// dielectric, interface, aBSDF; trans2 in fact never passes shadow rays).
 bool IsTransparentType(MaterialType type);
 /// light, illum, glow, spotlight.
 bool IsLightType(MaterialType type);
