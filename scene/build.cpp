@@ -597,7 +597,8 @@ private:
         const bool thick = material.type == MaterialType::Bsdf;
         const std::size_t fileAt = thick ? 1 : 0;
         auto& p = std::get<BsdfParams>(material.params);
-        p.data = bsdfFiles_.Load(object.sargs[fileAt], object.loc.ToString() + ": " + Describe(object));
+        p.data = bsdfFiles_.Load(object.sargs[fileAt], object.loc.ToString() + ": " + Describe(object),
+                                 warn_);
         p.proxy = thick && object.sargs[0] != "0";
         SceneObject frame = object;
         frame.sargs.erase(frame.sargs.begin() + static_cast<std::ptrdiff_t>(fileAt));

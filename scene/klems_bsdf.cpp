@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scene/klems_bsdf.h"
 
+#include "scene/bsdf_xml.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -62,50 +64,6 @@ Vec3 ToFrontOut(const Vec3& v, KlemsSide side) {
             return -v;
     }
     return v;
-}
-
-/// libBSDF's SDmultiSamp() in two dimensions: `r` in [0,1) along a Hilbert
-/// curve over the unit square (2^16 cells a side; libBSDF's finer curve
-/// agrees to that resolution), `j0`, `j1` in [0,1) placing the point in its
-/// cell. The curve's first level visits (0,0), (1,0), (1,1), (0,1) in
-/// (t[0], t[1]): -ss below 1, which narrows r, narrows the directions
-/// within a patch as Radiance's does.
-void HilbertSquare(double r, double j0, double j1, double t[2]) {
-    constexpr int kOrder = 16;
-    std::uint64_t d = static_cast<std::uint64_t>(r * 4294967296.0);  // 2^(2·kOrder)
-    std::uint32_t x = 0, y = 0;
-    for (std::uint32_t s = 1; s < (1u << kOrder); s *= 2) {
-        const std::uint32_t rx = 1 & static_cast<std::uint32_t>(d / 2);
-        const std::uint32_t ry = 1 & (static_cast<std::uint32_t>(d) ^ rx);
-        if (ry == 0) {
-            if (rx == 1) {
-                x = s - 1 - x;
-                y = s - 1 - y;
-            }
-            std::swap(x, y);
-        }
-        x += s * rx;
-        y += s * ry;
-        d /= 4;
-    }
-    constexpr double kCell = 1.0 / (1u << kOrder);
-    t[0] = kCell * (y + j0);
-    t[1] = kCell * (x + j1);
-}
-
-bool EqualNoCase(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
-/// An element's text without surrounding white space (ezxml_txt()).
-std::string_view Text(const pugi::xml_node& node) {
-    std::string_view t = node.child_value();
-    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
-    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
-    return t;
 }
 
 }  // namespace
@@ -270,119 +228,30 @@ std::optional<Vec3> KlemsComponent::Sample(const Vec3& in, double x, double j0, 
     return drawn->Direction(int(k), t[0], t[1]);
 }
 
-const KlemsComponent* KlemsBsdf::Transmission(bool front) const {
-    const auto* near = front ? &tf : &tb;
-    const auto* far = front ? &tb : &tf;
-    return *near ? &**near : *far ? &**far : nullptr;
-}
-
-double KlemsBsdf::Evaluate(const Vec3& out, const Vec3& in) const {
-    const bool inFront = in.z > 0.0, outFront = out.z > 0.0;
-    double lamb;
-    const KlemsComponent* c;
-    if (inFront && outFront) {
-        lamb = rLambFront;
-        c = Reflection(true);
-    } else if (!inFront && !outFront) {
-        lamb = rLambBack;
-        c = Reflection(false);
-    } else {
-        lamb = inFront ? tLambFront : tLambBack;
-        c = Transmission(inFront);
-    }
-    double f = lamb / kPi;
-    if (c) f += c->Value(out, in).value_or(0.0);
-    return f;
-}
-
-void KlemsBsdf::Size(double psa[2], const Vec3& v1, const Vec3* v2, bool minAndMax) const {
-    psa[0] = 10.0;
-    if (minAndMax) psa[1] = 0.0;
-    const bool front = v1.z > 0.0;
-    const KlemsComponent* r = Reflection(front);
-    const KlemsComponent* t = Transmission(front);
-    if (v2) ((v1.z > 0.0) != (v2->z > 0.0) ? r : t) = nullptr;
-    if (!r && !t) {  // all diffuse
-        psa[0] = kPi;
-        if (minAndMax) psa[1] = kPi;
-        return;
-    }
-    if (r) r->FoldProjectedSolidAngle(psa, v1, v2, minAndMax);
-    if (t) t->FoldProjectedSolidAngle(psa, v1, v2, minAndMax);
-}
-
-double KlemsBsdf::DirectHemispherical(const Vec3& in, bool transmission) const {
-    const KlemsComponent* c = transmission ? Transmission(in.z > 0.0) : Reflection(in.z > 0.0);
-    return c ? c->Total(in) : 0.0;
-}
-
 namespace {
 
 class Reader {
 public:
-    Reader(std::string_view text, const std::string& path) : text_(text), path_(path) {
+    explicit Reader(const std::string& path) : path_(path) {
         for (const BuiltIn& b : kBuiltIns) bases_.push_back(MakeBasis(b.name, b.rings, 90.0));
     }
 
-    KlemsBsdf Read() {
-        pugi::xml_document doc;
-        const pugi::xml_parse_result parsed =
-            doc.load_buffer(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
-        if (!parsed) {
-            throw Error(Error::Kind::User, FileLoc{path_, 0, static_cast<long long>(parsed.offset)},
-                        std::string("bad XML in BSDF file: ") + parsed.description());
-        }
-        const pugi::xml_node top = doc.document_element();
-        if (std::string_view(top.name()) != "WindowElement")
-            Fail("top level node not 'WindowElement'");
-        const pugi::xml_node layer = top.child("Optical").child("Layer");
-        if (!layer) Fail("no optical layer");
+    void Read(const pugi::xml_node& layer, bool rows, BsdfData& bsdf) {
         const pugi::xml_node definition = layer.child("DataDefinition");
-        const std::string_view structure = Text(definition.child("IncidentDataStructure"));
-        if (structure.empty()) Fail("missing IncidentDataStructure");
-        bool rows;
-        if (EqualNoCase(structure, "Rows")) {
-            rows = true;
-        } else if (EqualNoCase(structure, "Columns")) {
-            rows = false;
-        } else if (EqualNoCase(structure, "TensorTree3") || EqualNoCase(structure, "TensorTree4")) {
-            Fail(
-                "tensor-tree BSDFs are not supported (README, \"Differences\"); "
-                "only Klems matrices are");
-        } else {
-            Fail("unsupported IncidentDataStructure '" + std::string(structure) + "'");
-        }
         for (pugi::xml_node b = definition.child("AngleBasis"); b;
              b = b.next_sibling("AngleBasis")) {
             ReadBasis(b);
         }
-        KlemsBsdf bsdf;
-        bsdf.name = path_;
         for (pugi::xml_node w = layer.child("WavelengthData"); w;
              w = w.next_sibling("WavelengthData")) {
             // Only the photopic (Y) data; colour (CIE-X, CIE-Z) and solar
             // blocks are skipped.
-            if (!EqualNoCase(Text(w.child("Wavelength")), "Visible")) continue;
+            if (!EqualNoCase(XmlText(w.child("Wavelength")), "Visible")) continue;
             for (pugi::xml_node d = w.child("WavelengthDataBlock"); d;
                  d = d.next_sibling("WavelengthDataBlock")) {
                 ReadBlock(d, rows, bsdf);
             }
         }
-        // extract_diffuse(), then SDloadFile()'s removal of components with
-        // almost nothing above their Lambertian part.
-        const auto keep = [](std::optional<KlemsComponent>& c, double& lamb) {
-            if (!c) return;
-            lamb = c->lambertian();
-            if (c->maxHemispherical() <= 0.001) c.reset();
-        };
-        keep(bsdf.rf, bsdf.rLambFront);
-        keep(bsdf.rb, bsdf.rLambBack);
-        const bool front = bsdf.tf.has_value(), back = bsdf.tb.has_value();
-        keep(bsdf.tf, bsdf.tLambFront);
-        keep(bsdf.tb, bsdf.tLambBack);
-        if (front && !back) bsdf.tLambBack = bsdf.tLambFront;
-        if (back && !front) bsdf.tLambFront = bsdf.tLambBack;
-        return bsdf;
     }
 
 private:
@@ -400,7 +269,7 @@ private:
     /// A basis the file defines (load_angle_basis()); one with a known
     /// name is taken to be that one.
     void ReadBasis(const pugi::xml_node& node) {
-        const std::string name(Text(node.child("AngleBasisName")));
+        const std::string name(XmlText(node.child("AngleBasisName")));
         if (name.empty()) Fail("AngleBasis without AngleBasisName");
         if (FindBasis(name)) return;
         std::vector<std::pair<double, int>> rings;
@@ -410,13 +279,13 @@ private:
              b = b.next_sibling("AngleBasisBlock")) {
             const pugi::xml_node bounds = b.child("ThetaBounds");
             const double lower =
-                rings.empty() ? 0.0 : Number(Text(bounds.child("LowerTheta")), name);
+                rings.empty() ? 0.0 : Number(XmlText(bounds.child("LowerTheta")), name);
             if (!rings.empty() &&
                 std::fabs(lower - upper) > 1e-6 * std::max(std::fabs(upper), 1e-300)) {
                 Fail("theta values disagree in angle basis '" + name + "'");
             }
-            const double nextUpper = Number(Text(bounds.child("UpperTheta")), name);
-            const double phis = Number(Text(b.child("nPhis")), name);
+            const double nextUpper = Number(XmlText(bounds.child("UpperTheta")), name);
+            const double phis = Number(XmlText(b.child("nPhis")), name);
             if (!(phis >= 1) || phis > kMaxPatches || (phis < 2 && upper > kFtiny) ||
                 !(nextUpper > upper) || nextUpper > 90.0) {
                 Fail("illegal ring in angle basis '" + name + "'");
@@ -440,10 +309,10 @@ private:
         return v;
     }
 
-    void ReadBlock(const pugi::xml_node& block, bool rows, KlemsBsdf& bsdf) const {
-        const std::string_view direction = Text(block.child("WavelengthDataDirection"));
+    void ReadBlock(const pugi::xml_node& block, bool rows, BsdfData& bsdf) const {
+        const std::string_view direction = XmlText(block.child("WavelengthDataDirection"));
         // WINDOW's front is Radiance's back (bsdf_m.c's load_bsdf_data()).
-        std::optional<KlemsComponent>* target;
+        std::unique_ptr<const BsdfComponent>* target;
         KlemsSide inSide, outSide;
         if (EqualNoCase(direction, "Transmission Front")) {
             target = &bsdf.tb, inSide = KlemsSide::BackIn, outSide = KlemsSide::FrontOut;
@@ -456,8 +325,8 @@ private:
         } else {
             return;  // not a direction libBSDF knows: skipped, as there
         }
-        const std::string_view columnName = Text(block.child("ColumnAngleBasis"));
-        const std::string_view rowName = Text(block.child("RowAngleBasis"));
+        const std::string_view columnName = XmlText(block.child("ColumnAngleBasis"));
+        const std::string_view rowName = XmlText(block.child("RowAngleBasis"));
         if (columnName.empty()) Fail("missing column basis");
         if (rowName.empty()) Fail("missing row basis");
         const auto in = FindBasis(columnName);
@@ -485,35 +354,22 @@ private:
             const std::size_t at = rows ? (k % nout) * nin + k / nout : k;
             values[at] = v < 0.0 ? 0.0f : static_cast<float>(v);
         }
-        target->emplace(in, inSide, out, outSide, std::move(values));
+        auto component =
+            std::make_unique<KlemsComponent>(in, inSide, out, outSide, std::move(values));
         // Values so large that their sums overflow would sample nonsense.
-        if (!(*target)->FiniteTotals()) Fail("ScatteringData values too large");
+        if (!component->FiniteTotals()) Fail("ScatteringData values too large");
+        *target = std::move(component);
     }
 
-    std::string_view text_;
     const std::string& path_;
     std::vector<std::shared_ptr<const KlemsBasis>> bases_;
 };
 
 }  // namespace
 
-KlemsBsdf ParseKlemsBsdf(std::string_view text, const std::string& path) {
-    return Reader(text, path).Read();
-}
-
-std::shared_ptr<const KlemsBsdf> BsdfFileCache::Load(const std::string& name,
-                                                     const std::string& requestedBy) {
-    for (const auto& [key, bsdf] : files_) {
-        if (key == name) return bsdf;
-    }
-    const std::optional<cal::SourceText> file = cal::FindFunctionFile(name, path_);
-    if (!file) {
-        throw Error(Error::Kind::System, (requestedBy.empty() ? "" : requestedBy + ": ") +
-                                             "cannot find BSDF file \"" + name + "\"");
-    }
-    auto bsdf = std::make_shared<const KlemsBsdf>(ParseKlemsBsdf(file->text, file->name));
-    files_.emplace_back(name, bsdf);
-    return bsdf;
+void ReadKlemsLayer(const pugi::xml_node& layer, bool rows, const std::string& path,
+                    BsdfData& bsdf) {
+    Reader(path).Read(layer, rows, bsdf);
 }
 
 }  // namespace rt

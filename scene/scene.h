@@ -28,7 +28,7 @@
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "scene/data_file.h"
-#include "scene/klems_bsdf.h"
+#include "scene/bsdf_data.h"
 
 namespace rt {
 
@@ -126,11 +126,11 @@ struct ClipParams {
     std::vector<int> clipped;
 };
 /// BSDF and aBSDF (0, 3, 6 or 9 reals, m_bsdf.c): the scattering of a
-/// BSDF file (scene/klems_bsdf.h), plus diffuse parts the reals add.
+/// BSDF file (scene/bsdf_data.h), plus diffuse parts the reals add.
 struct BsdfParams {
     Rgb frontDiffuse, backDiffuse;   // added reflectances, front and back
     Rgb diffuseTransmission;         // added transmittance
-    std::shared_ptr<const KlemsBsdf> data;  // set by the scene builder
+    std::shared_ptr<const BsdfData> data;  // set by the scene builder
     /// Radiance's isBSDFproxy(): a BSDF whose thickness is not written "0"
     /// (what -i and the leak test pass, whatever the thickness evaluates to).
     bool proxy = false;

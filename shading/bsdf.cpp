@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
 // BSDF and aBSDF: Radiance's materials whose scattering is a BSDF file
-// (m_bsdf.c), here Klems matrices (scene/klems_bsdf.h). The file's
+// (m_bsdf.c), Klems matrices or tensor trees (scene/bsdf_data.h). The file's
 // Lambertian parts, plus the diffuse parts the reals add, take the indirect
 // light through the ambient term and the direct light as a diffuse
 // surface's. The rest is sampled with rays when its hemispherical share
@@ -28,9 +28,9 @@ namespace {
 
 /// One hit's frame and parts (m_bsdf.c's BSDFDAT).
 struct BsdfHit {
-    BsdfHit(const KlemsBsdf& s, const TracedRay& r, double ss) : sd(s), ray(r), specJitter(ss) {}
+    BsdfHit(const BsdfData& s, const TracedRay& r, double ss) : sd(s), ray(r), specJitter(ss) {}
 
-    const KlemsBsdf& sd;
+    const BsdfData& sd;
     const TracedRay& ray;
     double specJitter;          // -ss
     Vec3 x, y, z;               // the frame's axes in render space
@@ -59,7 +59,7 @@ struct BsdfHit {
 
     /// The transmission component light from this side of the surface
     /// meets (pr->rod > 0: the front).
-    const KlemsComponent* ViewTransmission() const { return sd.Transmission(ray.rod > 0.0); }
+    const BsdfComponent* ViewTransmission() const { return sd.Transmission(ray.rod > 0.0); }
 };
 
 /// compute_through(): an aBSDF's peak around the straight-through
@@ -72,7 +72,7 @@ void ComputeThrough(BsdfHit& h) {
         {1.2, 0},     {-1.2, 1.2}, {-1.2, -1.2}, {1.2, 1.2},  {1.2, -1.2},  {-1.8, 0},
         {0, 1.8},     {0, -1.8},   {1.8, 0},     {-1.8, 1.8}, {-1.8, -1.8}, {1.8, 1.8},
         {1.8, -1.8},  {-2.4, 0},   {0, 2.4},     {0, -2.4},   {2.4, 0}};
-    const KlemsComponent* t = h.ViewTransmission();
+    const BsdfComponent* t = h.ViewTransmission();
     if (!t || Bright(h.ray.pcol) <= kFtiny) return;
     const double search = std::sqrt(t->minProjectedSolidAngle());
     struct Probe {
@@ -143,8 +143,11 @@ std::optional<Rgb> DirectSpecular(const BsdfHit& h, const Vec3& ldir, double ome
             return h.cthruSurround;
         }
     }
+    // The view direction is the file's incident one and the light's the
+    // outgoing one, as for the sampled rays: Radiance 5.4a's choice (its
+    // binary, on data without reciprocity), in values and cell sizes alike.
     double psa[2];
-    h.sd.Size(psa, h.vray, &vsrc, false);
+    h.sd.Size(psa, vsrc, &h.vray, false);
     const double tomega = psa[0];
     // Radiance 5.4a's sampling: about 4·(-ss)·weight view directions
     // jittered over the view patch, all aimed at the source sample's
@@ -159,10 +162,10 @@ std::optional<Rgb> DirectSpecular(const BsdfHit& h, const Vec3& ldir, double ome
     double sum = 0, weight = 0;
     for (int i = nsamp; i--;) {
         const Vec3 vjit = h.Jittered(tsr, rng);
-        const double f = h.sd.Evaluate(vjit, vsrc);
+        const double f = h.sd.Evaluate(vsrc, vjit);
         if (f - diffuse <= kFtiny) continue;  // no matrix part
         // A much finer patch there (variable resolution) is not safe to use.
-        h.sd.Size(psa, vjit, &vsrc, false);
+        h.sd.Size(psa, vsrc, &vjit, false);
         if (psa[0] < 0.12 * tomega) continue;
         sum += f;
         weight += 1.0;
@@ -173,7 +176,7 @@ std::optional<Rgb> DirectSpecular(const BsdfHit& h, const Vec3& ldir, double ome
 
 /// One component's sampled rays (sample_sdcomp()).
 void SampleComponent(const RayTree& tree, ThreadState& ts, TracedRay& ray, const BsdfHit& h,
-                     const KlemsComponent& c, bool transmission, const Vec3& frontNormal) {
+                     const BsdfComponent& c, bool transmission, const Vec3& frontNormal) {
     const double ss = h.specJitter;
     const bool hasThrough =
         transmission && !(ray.crtype & (kSpecularRay | kAmbientRay)) && Bright(h.cthru) > kFtiny;
@@ -210,7 +213,7 @@ void SampleMatrix(const RayTree& tree, ThreadState& ts, TracedRay& ray, BsdfHit&
                   bool transmission, const Vec3& frontNormal) {
     Rgb& unsampled = transmission ? h.tunsamp : h.runsamp;
     unsampled = Rgb();
-    const KlemsComponent* c = transmission ? h.ViewTransmission() : h.sd.Reflection(ray.rod > 0.0);
+    const BsdfComponent* c = transmission ? h.ViewTransmission() : h.sd.Reflection(ray.rod > 0.0);
     if (!c) return;
     double b = 0;  // the share the through ray took
     if (transmission && !(ray.crtype & (kSpecularRay | kAmbientRay)) && Bright(h.cthru) > kFtiny) {
@@ -258,7 +261,7 @@ void ShadeBsdf(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         tree.PassThrough(ts, ray);
         return;
     }
-    const KlemsBsdf& sd = *p.data;
+    const BsdfData& sd = *p.data;
     // A zero-thickness BSDF stops shadow rays, as does any without transmission.
     if ((ray.crtype & kShadowRay) && (m.type == MaterialType::Bsdf || !sd.Transmits())) return;
     BsdfHit h(sd, ray, setup.shading.specular.sampling);

@@ -12,8 +12,9 @@
 # a redirecting "louvre" (light sent toward +y, so the up vector matters;
 # incident directions in rows), one on a basis the file defines itself, one
 # on the full Klems basis with transmission given for one side only
-# (reciprocity), one with nothing but transmission (aBSDF's peak), and one
-# whose transmission is all Lambertian.
+# (reciprocity), one with nothing but transmission (aBSDF's peak), one
+# whose transmission is all Lambertian, and one whose matrices are
+# asymmetric (which of the direct light's two directions is the incident).
 # Covers: each file on a plane under three kinds of source, seen from both
 # sides; up vectors (constant, from the position, transformed, along the
 # normal: a warning); aBSDF's through peak for view and shadow rays; BSDF
@@ -142,6 +143,15 @@ def main():
         "Transmission Front": diagonal(HALF, 0.25, lambda t: 0.0),
         "Transmission Back": diagonal(HALF, 0.25, lambda t: 0.0),
         "Reflection Back": diagonal(HALF, 0.05, lambda t: 0.0)}, "LBNL/Klems Half"))
+    # Asymmetric matrices (no reciprocity between their incident and
+    # outgoing patches): the direct light's view direction is libBSDF's
+    # incident one and the source's the outgoing one, as in Radiance 5.4a.
+    nh = len(patches(HALF))
+    write("asym.xml", klems_xml({
+        "Reflection Back": [[0.03 + 0.002 * o + 0.02 * (i % 7) for i in range(nh)]
+                            for o in range(nh)],
+        "Transmission Back": [[0.02 + 0.004 * (o % 5) + 0.03 * (i % 3) for i in range(nh)]
+                              for o in range(nh)]}, "LBNL/Klems Half"))
     write("down.rays", "1 2 5 0.6 0 -0.8\n0 0 5 0 0 -1\n-3 4 2 0.3 -0.2 -1\n"
                        "2.5 -1 7 0 0 -1\n0.2 0.3 5 -0.1 -0.15 -1\n3 3 2 -0.6 -0.6 -0.5\n")
     write("up.rays", "1 2 -5 0 0 1\n-1 0.5 -3 0.2 0.1 1\n0.6 0.6 -2 0.2 0.2 1\n"
@@ -151,9 +161,9 @@ def main():
     lamps = dict(LAMPS, below=below, big=big)
 
     # 1. Each file on a plane under each kind of source, seen from both sides.
-    for body in ("glaze", "louvre", "custom", "full"):
+    for body in ("glaze", "louvre", "custom", "full", "asym"):
         for lamp in lamps:
-            if body in ("custom", "full") and lamp in ("polygon", "distant"):
+            if body in ("custom", "full", "asym") and lamp in ("polygon", "distant"):
                 continue
             name = f"{body}_{lamp}"
             write(f"plane_{name}.rad", lamps[lamp] + material("BSDF", f"{body}.xml") +
@@ -222,7 +232,7 @@ def main():
     # the direction, a BSDF above an aBSDF.
     write("sky_rays.rays", "0 0 2 0.5 0 -1\n1 1 2 -0.2 0.3 -1\n0 0 -1 0 0.3 1\n"
                            "0 0 -5 0.2 0 1\n0 0 1 0.98 0 -0.17\n")
-    for body in ("glaze", "louvre"):
+    for body in ("glaze", "louvre", "asym"):
         write(f"sky_{body}.rad", SKY + material("BSDF", f"{body}.xml") + "m " + PLANE +
               material("aBSDF", "glaze.xml") +
               "m polygon p2 0 0 12 -10 -10 -3  10 -10 -3  10 10 -3  -10 10 -3\n")
@@ -287,8 +297,12 @@ def main():
     write("tilt.rays", "\n".join(tilts) + "\n")
     write("tilt.rad", "void light lamp 0 0 3 100 100 100\nlamp sphere bulb 0 0 4 1 .3 6 .1\n" +
           material("BSDF", "glaze.xml") + "m " + PLANE)
+    write("tilt_asym.rad", "void light lamp 0 0 3 100 100 100\nlamp sphere bulb 0 0 4 1 .3 6 .1\n" +
+          material("BSDF", "asym.xml") + "m " + PLANE)
     for ss in ("1", "2"):
         runs.append(("bsdfjitter", f"ss{ss}", ["tilt.rad"], "tilt.rays", 200,
+                     f"-u+ -dj 0 -dt 0 -ss {ss}", "noise"))
+        runs.append(("bsdfjitter", f"asym_ss{ss}", ["tilt_asym.rad"], "tilt.rays", 200,
                      f"-u+ -dj 0 -dt 0 -ss {ss}", "noise"))
     # 6. Errors.
     errors = {

@@ -51,15 +51,15 @@ def write_expected(path, header, blocks):
             f.write("end\n")
 
 
-def run_and_write(runs, radiance, out, header):
+def run_and_write(runs, radiance, out, header, lazy_noise_repeat=16):
     """Runs each (group, name, files, rays, repeat, options, check) of `runs`
     through real Radiance (`radiance`, generate_patterns.radiance) and writes
     out/expected.txt after `header`. "noise" runs: Radiance's mean over
-    `repeat` repeats against lazyrad's over 16."""
+    `repeat` repeats against lazyrad's over `lazy_noise_repeat`."""
     blocks = []
     with tempfile.TemporaryDirectory() as tmp:
         for group, name, files, rays, repeat, options, check in runs:
-            lazy_repeat = 16 if check == "noise" else repeat
+            lazy_repeat = lazy_noise_repeat if check == "noise" else repeat
             status, err, rows, sems = radiance(files, rays, repeat, options, tmp, out=out)
             blocks.append(dict(group=group, name=name, files=files, rays=rays,
                                repeat=lazy_repeat, options=options, check=check,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //
-// Fuzz target: arbitrary bytes as a BSDF file (Klems XML) through
-// ParseKlemsBsdf, then every query the BSDF materials make (evaluation,
+// Fuzz target: arbitrary bytes as a BSDF file (Klems matrices or tensor
+// trees) through ParseBsdf, then every query the BSDF materials make (evaluation,
 // patch sizes, hemispherical totals, sampling) for directions on both
 // sides, grazing and along the axis. rt::Error is the expected way to
 // reject input; any other exception, a crash, UB, a hang or memory out of
@@ -11,13 +11,13 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "scene/klems_bsdf.h"
+#include "scene/bsdf_data.h"
 #include "tests/fuzz/fuzz_entry.h"
 
 extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     try {
-        const rt::KlemsBsdf b = rt::ParseKlemsBsdf(text, "fuzz.xml");
+        const rt::BsdfData b = rt::ParseBsdf(text, "fuzz.xml");
         const rt::Vec3 dirs[] = {rt::Vec3(0, 0, 1),
                                  rt::Vec3(0, 0, -1),
                                  rt::Normalize(rt::Vec3(.3, .2, .9)),
@@ -34,7 +34,7 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
             b.Size(psa, a, nullptr, true);
             for (const bool t : {false, true}) {
                 static_cast<void>(b.DirectHemispherical(a, t));
-                const rt::KlemsComponent* comp =
+                const rt::BsdfComponent* comp =
                     t ? b.Transmission(a.z > 0) : b.Reflection(a.z > 0);
                 if (!comp) continue;
                 for (const double x : {0.0, 0.37, 0.999999}) {

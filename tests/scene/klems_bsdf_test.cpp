@@ -91,7 +91,7 @@ Vec3 Polar(double thetaDegrees, double phiDegrees, double zSign = 1.0) {
 
 std::string ErrorOf(const std::string& text) {
     try {
-        static_cast<void>(ParseKlemsBsdf(text, "dir/w.xml"));
+        static_cast<void>(ParseBsdf(text, "dir/w.xml"));
     } catch (const Error& e) {
         return e.what();
     }
@@ -143,8 +143,8 @@ TEST(KlemsBsdf, WindowsFrontIsRadiancesBack) {
     t[2][2] = 3.0;  // incident patch 2 straight through
     r[1][1] = 2.0;  // mirror reflection of incident patch 1 (azimuth 180°)
     r[0][0] = 0.5;
-    const KlemsBsdf b =
-        ParseKlemsBsdf(TinyFile({{"Transmission Back", t}, {"Reflection Back", r}}), "t.xml");
+    const BsdfData b =
+        ParseBsdf(TinyFile({{"Transmission Back", t}, {"Reflection Back", r}}), "t.xml");
     ASSERT_TRUE(b.tf && b.rf);
     EXPECT_FALSE(b.tb || b.rb);
     // Light from the front at azimuth 270° (x, y negated: incident patch 2,
@@ -167,8 +167,8 @@ TEST(KlemsBsdf, SmallestValueBecomesTheLambertianPart) {
     std::vector<std::vector<double>> t(5, std::vector<double>(5, 0.1)),
         r(5, std::vector<double>(5, 0.2));
     t[1][1] += 1.0;
-    const KlemsBsdf b =
-        ParseKlemsBsdf(TinyFile({{"Transmission Front", t}, {"Reflection Front", r}}), "t.xml");
+    const BsdfData b =
+        ParseBsdf(TinyFile({{"Transmission Front", t}, {"Reflection Front", r}}), "t.xml");
     EXPECT_NEAR(b.tLambBack, 0.1 * kPi, 1e-7);   // entering from behind
     EXPECT_NEAR(b.tLambFront, 0.1 * kPi, 1e-7);  // the other side's, by reciprocity
     EXPECT_NEAR(b.rLambBack, 0.2 * kPi, 1e-7);
@@ -192,9 +192,9 @@ TEST(KlemsBsdf, RowsAndColumnsReadTheSameMatrix) {
         for (int i = 0; i < 5; ++i) m[o][i] = 0.01 * (1 + o + 7 * i);
     for (int o = 0; o < 5; ++o)
         for (int i = 0; i < 5; ++i) transposed[i][o] = m[o][i];
-    const KlemsBsdf c = ParseKlemsBsdf(TinyFile({{"Transmission Back", m}}), "c.xml");
-    const KlemsBsdf r =
-        ParseKlemsBsdf(TinyFile({{"Transmission Back", transposed}}, true), "r.xml");
+    const BsdfData c = ParseBsdf(TinyFile({{"Transmission Back", m}}), "c.xml");
+    const BsdfData r =
+        ParseBsdf(TinyFile({{"Transmission Back", transposed}}, true), "r.xml");
     for (const double a : {10.0, 50.0}) {
         for (const double p : {0.0, 100.0, 200.0}) {
             const Vec3 in = Polar(a, p), out = Polar(70 - a, p + 45, -1);
@@ -214,7 +214,7 @@ TEST(KlemsBsdf, SamplerDrawsPatchesByTheirShare) {
     const KlemsBasis basis = TinyBasis();
     std::vector<std::vector<double>> t(5, std::vector<double>(5, 0.0));
     for (int o = 0; o < 5; ++o) t[o][0] = o / basis.ProjectedSolidAngle(o);
-    const KlemsBsdf b = ParseKlemsBsdf(TinyFile({{"Transmission Back", t}}), "t.xml");
+    const BsdfData b = ParseBsdf(TinyFile({{"Transmission Back", t}}), "t.xml");
     ASSERT_TRUE(b.tf);
     const Vec3 in(0, 0, 1);
     EXPECT_NEAR(b.tf->Total(in), 10.0, 1e-5);
@@ -244,7 +244,7 @@ TEST(KlemsBsdf, SamplerDrawsPatchesByTheirShare) {
 TEST(KlemsBsdf, ProjectedSolidAnglesOfTheQueriedPatches) {
     std::vector<std::vector<double>> t(5, std::vector<double>(5, 0.0));
     t[0][0] = 1.0;
-    const KlemsBsdf b = ParseKlemsBsdf(TinyFile({{"Transmission Back", t}}), "t.xml");
+    const BsdfData b = ParseBsdf(TinyFile({{"Transmission Back", t}}), "t.xml");
     const double cap = kPi * 0.25, side = kPi * 0.75 / 4;
     double psa[2];
     b.Size(psa, Polar(10, 0), nullptr, true);  // the view's patch, both ways
@@ -266,10 +266,9 @@ TEST(KlemsBsdf, BadFilesGiveOneLineErrors) {
     EXPECT_EQ(ErrorOf("<WindowElement><Optical><Layer/></Optical></WindowElement>"),
               "dir/w.xml: missing IncidentDataStructure");
     EXPECT_EQ(ErrorOf("<WindowElement><Optical><Layer><DataDefinition><IncidentDataStructure>"
-                      "TensorTree4</IncidentDataStructure></DataDefinition></Layer></Optical>"
+                      "Matrix</IncidentDataStructure></DataDefinition></Layer></Optical>"
                       "</WindowElement>"),
-              "dir/w.xml: tensor-tree BSDFs are not supported (README, \"Differences\"); only "
-              "Klems matrices are");
+              "dir/w.xml: unsupported IncidentDataStructure 'Matrix'");
     std::vector<std::vector<double>> t(5, std::vector<double>(5, 0.1));
     std::string good = TinyFile({{"Transmission Back", t}});
     std::string noColumn = good;
