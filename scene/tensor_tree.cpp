@@ -105,7 +105,7 @@ TreeComponent::TreeComponent(int dims, TreeSide side, std::vector<Node> nodes,
     // get_extrema(), on the values as read: the smallest cell, and the
     // largest mean over incident cells of at least 1/32 a side.
     double step = SmallestLeaf(0);
-    quantum_ = std::min(1.0 / 256.0, step);
+    smallest_ = step;
     minProjSA_ = kPi * step * step;
     step = std::max(step, 1.0 / 32.0);
     double bmin[4] = {0, 0, 0, 0}, bmax[4] = {1, 1, 1, 1};
@@ -379,12 +379,14 @@ std::shared_ptr<const TreeComponent::Distribution> TreeComponent::DistributionFo
     } else {
         DiskToSquare(-in.x, -in.y, c);
     }
-    // The input cell of `quantum_` (never larger than the smallest leaf)
-    // selects the distribution, as libBSDF's cache does.
+    // Leaves are aligned to their size, none smaller than `smallest_`: all
+    // incident coordinates in one aligned box of that size meet the same
+    // leaves, so the box selects the distribution (libBSDF reuses one over
+    // the box of the slice's smallest cell, which holds the same).
     std::uint64_t key = reversed;
     for (int i = 0; i < dims_ - 2; ++i) {
-        const double bin = std::floor(c[i] / quantum_);
-        c[i] = (bin + 0.5) * quantum_;
+        const double bin = std::floor(c[i] / smallest_);
+        c[i] = (bin + 0.5) * smallest_;
         if (!(c[i] >= 0.0 && c[i] < 1.0)) return nullptr;
         key |= std::uint64_t(bin) << (1 + 24 * i);
     }

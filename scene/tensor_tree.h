@@ -100,7 +100,7 @@ private:
     TreeSide side_;
     std::vector<Node> nodes_;
     std::vector<float> values_;
-    double quantum_;  // the input quantisation of the distribution cache
+    double smallest_;  // the smallest leaf's edge: the distribution cache's bins
 
     mutable std::mutex cacheLock_;
     mutable std::unordered_map<std::uint64_t, std::shared_ptr<const Distribution>> cache_;
