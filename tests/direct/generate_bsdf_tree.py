@@ -69,6 +69,7 @@ import sys
 import tempfile
 
 from generate_aniso import LAMPS, PLANE, SKY
+from generate_bsdf import material
 from generate_patterns import BIN, ENV, radiance
 from matrix_data import LIT_BOX, fresh_folder, run_and_write
 
@@ -523,11 +524,6 @@ def check_trees(out=OUT):
     for k, err in sorted(worst.items()):
         print("%-17s %-30s %-8s reading: worst relative difference %.1e" % (k + (err,)),
               file=sys.stderr)
-
-
-def material(kind, body, up="0 1 0 .", thick="0", modifier="void", reals="0"):
-    strings = ([thick] if kind == "BSDF" else []) + [body] + up.split()
-    return f"{modifier} {kind} m {len(strings)} {' '.join(strings)} 0 {reals}\n"
 
 
 def main():
