@@ -199,7 +199,20 @@ void SampleComponent(const RayTree& tree, ThreadState& ts, TracedRay& ray, const
         Rgb coef = Rgb::Grey(total / target);
         if (transmission) coef *= ray.pcol;
         TracedRay child;
-        if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) continue;
+        if (!tree.StartChild(ts, child, ray, kSpecularRay, &coef)) {
+            // The first of several refused (below -lw): as Radiance, start
+            // again with fewer, heavier rays, in proportion to the weight
+            // the ray lacked. Refused for another reason (-lr), the count
+            // would not fall: give up.
+            if (n == 0 && target > 1) {
+                const int before = target;
+                target = static_cast<int>(target * child.rweight /
+                                          (tree.setup().shading.limits.weight + 1e-20));
+                if (target >= before) break;
+                n = -1;
+            }
+            continue;
+        }
         child.dir = h.ToWorld(*vsmp);
         if (transmission && h.thickness != 0.0) child.org -= frontNormal * h.thickness;
         tree.Trace(ts, child);

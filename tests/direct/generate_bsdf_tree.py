@@ -634,6 +634,10 @@ def main():
         for ss in ("1", "4"):
             runs.append(("treesampled", f"{body[4:]}_ss{ss}", [f"sky_{body[4:]}.rad"],
                          "sky_rays.rays", 300, f"-u+ -dj 0 -dt 0 -ss {ss}", "noise"))
+    # Near the -lw limit (-lr 8: no Russian roulette) the first of -ss 4's
+    # rays is refused, and Radiance starts again with fewer, heavier ones.
+    runs.append(("treesampled", "glaze_lw", ["sky_glaze.rad"], "sky_rays.rays", 300,
+                 "-u+ -dj 0 -dt 0 -ss 4 -lr 8 -lw 0.2", "noise"))
     # 5. -ab 1 without a cache: the box's top a tensor-tree window, its lamp
     # above.
     window = LIT_BOX.replace("wall polygon ceiling", "win polygon ceiling").replace(
