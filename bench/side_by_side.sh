@@ -8,7 +8,7 @@
 #
 #   bench/side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]
 #     JOBS  subset of: floor edges daylit floor_fast mixed floor_fast_oct shelf
-#           bsdf_overcast bsdf_sun (default all)
+#           bsdf_overcast bsdf_sun bsdf_tree (default all)
 #
 # Every speed-up is a ratio measured in this run; the absolute times are only
 # for reading the table. Lazyrad-only options can be passed through a wrapper
@@ -19,7 +19,7 @@ write=0 pairs=3
 while getopts "wn:" o; do case $o in w) write=1 ;; n) pairs=$OPTARG ;; *) exit 2 ;; esac; done
 shift $((OPTIND - 1))
 lz=$(realpath "${1:?usage: side_by_side.sh [-w] [-n PAIRS] LAZYRAD_RTRACE [JOBS]}")
-jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct shelf bsdf_overcast bsdf_sun}
+jobs=${2:-floor edges daylit floor_fast mixed floor_fast_oct shelf bsdf_overcast bsdf_sun bsdf_tree}
 sbs=$root/../shared/tools/side-by-side
 [ -x "$sbs" ] || { echo "side_by_side.sh: $sbs not found (needs ../shared)" >&2; exit 2; }
 defaults="-ad 1024 -as 512 -aa .1 -ar 256"
@@ -44,6 +44,7 @@ job() {  # name -> "description|options|scene|points|reference or -[|folder to r
     # the scene's folder, where both programs find blinds.xml on RAYPATH.
     bsdf_overcast) echo "BSDF blinds room, overcast sky, 96 points|$hb|$s/bsdf_room/bsdf_room_overcast.oct|$s/bsdf_room/grid.pts|$s/bsdf_room/ref/grid_I_ab2_sky.txt|$s/bsdf_room" ;;
     bsdf_sun) echo "BSDF blinds room, sun and sky, 96 points|$hb|$s/bsdf_room/bsdf_room_sun.oct|$s/bsdf_room/grid.pts|$s/bsdf_room/ref/grid_I_ab2_sun_sky.txt|$s/bsdf_room" ;;
+    bsdf_tree) echo "BSDF tensor-tree glazing room, overcast sky, 96 points|$hb|$s/bsdf_room/bsdf_room_tree.oct|$s/bsdf_room/grid.pts|$s/bsdf_room/ref/grid_I_ab2_tree_sky.txt|$s/bsdf_room" ;;
     *) echo "side_by_side.sh: unknown job '$1'" >&2; exit 2 ;;
   esac
 }

@@ -247,7 +247,8 @@ float TreeComponent::Lookup(const double pos[4], double* edge) const {
     for (int i = 0; i < dims_; ++i) {
         // A coordinate of exactly 1 (a grazing direction) stays in the
         // last cell.
-        const int c = std::clamp(int(res * p[i]), 0, res - 1);
+        const double q = res * p[i];
+        const int c = q >= res - 1 ? res - 1 : q > 0.0 ? int(q) : 0;  // NaN: 0
         at = at * std::size_t(res) + std::size_t(c);
     }
     return values_[n->first + at];
@@ -454,7 +455,8 @@ std::shared_ptr<const TreeComponent::Distribution> TreeComponent::Build(const do
         int lo[4] = {0, 0, 0, 0}, hi[4] = {1, 1, 1, 1};
         for (int i = 0; i < dims_; ++i) {
             if (fixed(i)) {
-                lo[i] = std::clamp(int((fixedPos[i] - cmin[i]) / size), 0, res - 1);
+                const double q = (fixedPos[i] - cmin[i]) / size;
+                lo[i] = q >= res - 1 ? res - 1 : q > 0.0 ? int(q) : 0;
                 hi[i] = lo[i] + 1;
             } else {
                 lo[i] = 0;
