@@ -36,7 +36,6 @@ static_assert((kMaxRows + 1) * ColumnsFor(kMaxRows + 1) > kMaxAmbientDivisions);
 /// One (row t, column p) cell of the hemisphere.
 struct Division {
     Rgb mean;                           // running mean radiance over its samples
-    double error = 0;                   // Radiance's variance estimate k (brightness²)
     double nearestInverseDistance = 0;  // max 1/d over its samples (0: misses at infinity)
     int samples = 0;                    // successful samples; 0 = the division failed
 };
@@ -183,40 +182,7 @@ std::optional<Traced> TraceOne(AmbientTraceRef trace, const Vec3& dir) {
     return out;
 }
 
-/// Super-sampling priorities from each division's *neighbours* only: the
-/// variance of the first-pass brightness of the divisions around it (same
-/// column above and below, same row left and right with wrap-around). A
-/// division an edge crosses has neighbours on both sides of the edge.
-///
-/// Why not Radiance's estimate, which includes the division's own sample:
-/// then a division whose first sample happened to catch a small bright patch
-/// gets refined (and its mean pulled down to the truth) while one whose
-/// first sample missed the patch stays dark, so the hemisphere comes out
-/// biased low, most at dim points (README, "Differences"). With the
-/// division's own sample left out, how many extra samples it gets does not
-/// depend on its own value, and its mean stays unbiased.
-void NeighbourPriorities(DivisionGrid& divs) {
-    const int rows = divs.Rows();
-    for (int t = 0; t < rows; ++t) {
-        for (int p = 0; p < divs.Columns(); ++p) {
-            double b[4];
-            int n = 0;
-            if (t > 0) b[n++] = Bright(divs.At(t - 1, p).mean);
-            if (t + 1 < rows) b[n++] = Bright(divs.At(t + 1, p).mean);
-            b[n++] = Bright(divs.At(t, divs.Previous(p)).mean);
-            b[n++] = Bright(divs.At(t, (p + 1) % divs.Columns()).mean);
-            double mean = 0;
-            for (int i = 0; i < n; ++i) mean += b[i];
-            mean /= n;
-            double var = 0;
-            for (int i = 0; i < n; ++i) var += (b[i] - mean) * (b[i] - mean);
-            divs.At(t, p).error = var / n;
-        }
-    }
-}
-
-/// Adds one super-sample to a division: running mean, and Radiance's
-/// incremental variance estimate k_n = ((mean_n − x_n)² + (n−1)²·k_{n−1}) / n².
+/// Adds one super-sample to a division: running mean and nearest hit.
 void AddSuperSample(Division& d, const Traced& sample) {
     const int n = ++d.samples;
     // mean += (x − mean)/n keeps a constant environment exactly constant.
@@ -227,10 +193,6 @@ void AddSuperSample(Division& d, const Traced& sample) {
     // distance alone (still the header's radius statistic), or Radiance ≤ 4.2's
     // mean 1/d, under-weights such an edge (docs/measured-choices.md).
     d.nearestInverseDistance = std::max(d.nearestInverseDistance, sample.inverseDistance);
-    const Rgb& radiance = sample.radiance;
-    const double diff = Bright(d.mean) - Bright(radiance);
-    const double previous = static_cast<double>(n - 1) * (n - 1);
-    d.error = (diff * diff + d.error * previous) / (static_cast<double>(n) * n);
 }
 
 /// Ward & Heckbert's translational gradient of E (absolute, W·m⁻² per unit
@@ -307,6 +269,81 @@ Vec3 RotationalGradient(const DivisionGrid& divs, const Frame& frame) {
 
 }  // namespace
 
+namespace detail {
+
+std::vector<int> AllotCheckerboard(const std::vector<double>& priority, int rows, int columns,
+                                   int count, Rng& rng,
+                                   FunctionRef<int(int colour, int budget, double total)> cut) {
+    std::vector<int> counts(priority.size(), 0);
+    const int cells = rows * columns;
+    // Cells of colour 0, that of cell (0, 0): half, or one more when both
+    // counts are odd.
+    const int evenCells = (cells + 1) / 2;
+    const int evenCount = static_cast<int>(
+        std::floor(static_cast<double>(count) * evenCells / cells + rng.Uniform()));
+    for (int colour = 0; colour < 2; ++colour) {
+        double total = 0;
+        for (int t = 0; t < rows; ++t) {
+            for (int p = (t + colour) % 2; p < columns; p += 2)
+                total += priority[static_cast<std::size_t>(t * columns + p)];
+        }
+        const double offset = rng.Uniform();
+        const int budget = cut(colour, colour == 0 ? evenCount : count - evenCount, total);
+        if (!(total > 0) || budget <= 0) continue;
+        double cumulative = 0;
+        for (int t = 0; t < rows; ++t) {
+            for (int p = (t + colour) % 2; p < columns; p += 2) {
+                const std::size_t k = static_cast<std::size_t>(t * columns + p);
+                const double before = std::floor(cumulative + offset);
+                cumulative += budget * priority[k] / total;
+                counts[k] = static_cast<int>(std::floor(cumulative + offset) - before);
+            }
+        }
+    }
+    return counts;
+}
+
+std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int rows,
+                                          int columns, int count, Rng& rng) {
+    // Priorities from each division's neighbours only: the variance of the
+    // first-pass brightness of the divisions around it, so a division an
+    // edge crosses has neighbours on both sides of it. Not Radiance's
+    // estimate, which includes the division's own sample: then a division
+    // whose first sample caught a small bright patch is refined (its mean
+    // pulled down to the truth) while one that missed it stays dark, and the
+    // hemisphere comes out low (README, "Differences"). Nor one normalisation
+    // over all divisions: a division whose first sample caught a rare bright
+    // ray (the sun through a BSDF window) raised its neighbours' priorities,
+    // so lowered its own share and kept that ray at full weight, and a sunny
+    // BSDF room came out 10 % high at -ab 1. Hence the checkerboard.
+    std::vector<double> priority(bright.size(), 0.0);
+    const bool oddColumns = columns % 2 != 0;
+    for (int t = 0; t < rows; ++t) {
+        for (int p = 0; p < columns; ++p) {
+            double b[4];
+            int n = 0;
+            if (t > 0) b[n++] = bright[static_cast<std::size_t>((t - 1) * columns + p)];
+            if (t + 1 < rows) b[n++] = bright[static_cast<std::size_t>((t + 1) * columns + p)];
+            // Across the azimuth's wrap-around an odd column count joins two
+            // cells of one colour: that neighbour is left out.
+            if (p > 0 || !oddColumns)
+                b[n++] = bright[static_cast<std::size_t>(t * columns + (p > 0 ? p - 1 : columns - 1))];
+            if (p + 1 < columns || !oddColumns)
+                b[n++] = bright[static_cast<std::size_t>(t * columns + (p + 1) % columns)];
+            double mean = 0;
+            for (int i = 0; i < n; ++i) mean += b[i];
+            mean /= n;
+            double var = 0;
+            for (int i = 0; i < n; ++i) var += (b[i] - mean) * (b[i] - mean);
+            priority[static_cast<std::size_t>(t * columns + p)] = var / n;
+        }
+    }
+    return AllotCheckerboard(priority, rows, columns, count, rng,
+                             [](int, int budget, double) { return budget; });
+}
+
+}  // namespace detail
+
 Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
                             AmbientTraceRef trace) {
     RT_DCHECK(LengthSquared(normal) > 0);
@@ -352,22 +389,15 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     const int extra = static_cast<int>(
         std::min(extraWanted, static_cast<double>(rows) * columns) + 0.5);
     if (h.complete && extra >= kMinSuperSamples && rows >= kMinSuperSampleRows) {
-        NeighbourPriorities(divs);
-        double total = 0;
-        for (const Division& d : divs.Cells()) total += d.error;
-        // Extra samples in proportion to priority, fixed before any is taken.
-        // Systematic sampling (one random offset over the cumulative shares)
-        // gives each division its share in expectation and exactly `extra`
-        // samples in total.
-        const double offset = rng.Uniform();
-        double cumulative = 0;
-        for (int i = 0; total > 0 && i < divs.Size(); ++i) {
-            const double before = std::floor(cumulative + offset);
-            cumulative += extra * divs[i].error / total;
-            const int count = static_cast<int>(std::floor(cumulative + offset) - before);
+        std::vector<double> bright(static_cast<std::size_t>(divs.Size()));
+        for (int i = 0; i < divs.Size(); ++i)
+            bright[static_cast<std::size_t>(i)] = Bright(divs[i].mean);
+        const std::vector<int> extraPerDivision =
+            detail::AllotClassicSuperSamples(bright, rows, columns, extra, rng);
+        for (int i = 0; i < divs.Size(); ++i) {
             const int t = i / columns;
             const int p = i % columns;
-            for (int k = 0; k < count; ++k) {
+            for (int k = 0; k < extraPerDivision[static_cast<std::size_t>(i)]; ++k) {
                 const double xi0 = rng.Uniform();
                 const double xi1 = rng.Uniform();
                 ++h.raysTraced;

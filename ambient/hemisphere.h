@@ -111,6 +111,36 @@ DivisionCounts HemisphereDivisions(const HemisphereOptions& options);
 Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options, Rng& rng,
                             AmbientTraceRef trace);
 
+namespace detail {
+
+/// How many of `count` extra samples each cell of a rows × columns grid
+/// (row-major) gets, the cells coloured as a checkerboard, colour (row +
+/// column) % 2, and each cell's `priority` computed from the other colour's
+/// samples only. Each colour gets a share of `count` by its number of cells
+/// (rounded at random), spread over its cells in proportion to their
+/// priorities by systematic sampling (one random offset per colour): exact
+/// in total, each cell its share in expectation. So a cell's count depends on
+/// no sample of its own colour, its own included, and a cell's mean over its
+/// samples stays unbiased. (Normalising all priorities together lets a cell's
+/// own sample raise its neighbours' priorities and so lower its own share:
+/// a cell that caught a small bright spot keeps it at full weight.)
+/// `cut(colour, budget, colourTotal)` may lower a colour's share; it is
+/// called after that colour's offset is drawn.
+std::vector<int> AllotCheckerboard(const std::vector<double>& priority, int rows, int columns,
+                                   int count, Rng& rng,
+                                   FunctionRef<int(int colour, int budget, double total)> cut);
+
+/// The classic sampler's allotment of `count` extra samples over its
+/// divisions, from their first-pass brightness `bright` (row-major, rows ×
+/// columns, columns wrapping around the azimuth): each division's priority is
+/// the variance of its neighbours of the other colour (above, below, left
+/// and right, the wrap-around pair left out where an odd column count puts it
+/// in the same colour), then AllotCheckerboard.
+std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int rows,
+                                          int columns, int count, Rng& rng);
+
+}  // namespace detail
+
 /// Turns a complete hemisphere into a classic (isotropic) record: radius from
 /// the harmonic mean distance, limited by the gradient and clamped to
 /// [minRadius, maxRadius] after dividing by sqrt(weight), gradients capped so

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "ambient/leak.h"
@@ -159,55 +160,27 @@ std::vector<double> NeighbourContrast(const HessianHemisphere& h) {
 std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& rng,
                                    const HemisphereOptions& options) {
     const std::vector<double> e = NeighbourContrast(h);
-    std::vector<int> counts(e.size(), 0);
-    // The cells form a checkerboard whose every cell has its neighbours in
-    // the other colour. Each colour gets a fixed share of the extra samples
-    // (by its number of cells), spread over its cells in proportion to their
-    // priorities, which come from the other colour's samples only. So how
-    // many extra samples a cell gets depends on no sample of its own colour,
-    // its own included. (Normalising all priorities together would let a
-    // cell's own sample raise its neighbours' priorities and so lower its own
-    // share: 1 % high under a small bright patch.)
+    // Every cell's neighbours are of the other colour of the checkerboard:
+    // AllotCheckerboard's contract holds.
     const int cells = h.ns * h.ns;
     const int evenCells = (cells + 1) / 2;  // the colour of cell (0, 0)
-    const int evenCount = static_cast<int>(
-        std::floor(static_cast<double>(count) * evenCells / cells + rng.Uniform()));
-    for (int colour = 0; colour < 2; ++colour) {
-        int budget = colour == 0 ? evenCount : count - evenCount;
-        double total = 0;
+    const auto cut = [&](int colour, int budget, double total) {
+        if (!(options.contrastTarget > 0)) return budget;
+        // The whole hemisphere's contrast and mean estimated from the other
+        // colour's samples alone (this colour's priorities come from them
+        // too), so no cell's count depends on a cell of its colour.
+        const int colourCells = colour == 0 ? evenCells : cells - evenCells;
+        double otherBright = 0;
         for (int i = 0; i < h.ns; ++i) {
-            for (int j = (i + colour) % 2; j < h.ns; j += 2) total += e[Index(h.ns, i, j)];
-        }
-        // Systematic sampling (one random offset over the cumulative shares):
-        // each cell its share in expectation, exactly `budget` in all.
-        const double offset = rng.Uniform();
-        if (options.contrastTarget > 0) {
-            // The whole hemisphere's contrast and mean estimated from the
-            // other colour's samples alone (this colour's priorities come from
-            // them too), so no cell's count depends on a cell of its colour.
-            const int colourCells = colour == 0 ? evenCells : cells - evenCells;
-            double otherBright = 0;
-            for (int i = 0; i < h.ns; ++i) {
-                for (int j = (i + colour + 1) % 2; j < h.ns; j += 2) {
-                    otherBright += Bright(h.At(i, j).radiance);
-                }
-            }
-            budget = SuperSamplesForContrast(budget, total * cells / colourCells, cells,
-                                             otherBright / (cells - colourCells),
-                                             options.contrastTarget, rng);
-        }
-        if (!(total > 0) || budget <= 0) continue;
-        double cumulative = 0;
-        for (int i = 0; i < h.ns; ++i) {
-            for (int j = (i + colour) % 2; j < h.ns; j += 2) {
-                const double before = std::floor(cumulative + offset);
-                cumulative += budget * e[Index(h.ns, i, j)] / total;
-                counts[Index(h.ns, i, j)] =
-                    static_cast<int>(std::floor(cumulative + offset) - before);
+            for (int j = (i + colour + 1) % 2; j < h.ns; j += 2) {
+                otherBright += Bright(h.At(i, j).radiance);
             }
         }
-    }
-    return counts;
+        return SuperSamplesForContrast(budget, total * cells / colourCells, cells,
+                                       otherBright / (cells - colourCells),
+                                       options.contrastTarget, rng);
+    };
+    return AllotCheckerboard(e, h.ns, h.ns, count, rng, cut);
 }
 
 }  // namespace detail
@@ -239,7 +212,14 @@ void SuperSample(HessianHemisphere& h, int count, const HemisphereOptions& optio
 std::vector<double> NormalisedBrightness(const HessianHemisphere& h, bool* radiometric) {
     std::vector<double> y(h.cells.size(), 1.0);
     const double b = Bright(h.value);
-    *radiometric = kAvgRefl * b > kFtiny;
+    // Radiance treats a hemisphere as black below an absolute brightness
+    // (B·AVGREFL <= FTINY: no gradients, no corral bits), which makes the
+    // answers depend on the unit of light: a near-black room lit by a lamp
+    // of radiance 1 took other records than the same room lit at 1e10
+    // (BrightSource.ScalesWithSourceRadiance). Here only a black hemisphere
+    // (or one so dim that 0.99/b would overflow) is, and the normalised
+    // values below depend on ratios alone.
+    *radiometric = b >= std::numeric_limits<double>::min();
     // Otherwise Radiance's Y = bright(v)·B + 1 differs from 1 by under 1e-12.
     if (*radiometric) {
         const double scale = 0.99 / b;
