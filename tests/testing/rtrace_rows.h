@@ -53,6 +53,7 @@ inline double Luminance(const std::vector<double>& v) {
 struct ReferenceError {
     double rms = 0;    // relative RMS error of luminance
     double worst = 0;  // largest relative error
+    double bias = 0;   // mean relative error (bench/score.py's "bias")
     size_t count = 0;  // rows compared
 };
 
@@ -70,10 +71,12 @@ inline ReferenceError CompareWithReference(const Rows& rows, const std::string& 
         }
         const double rel = Luminance(row) / Luminance(r) - 1;
         sumSq += rel * rel;
+        e.bias += rel;
         e.worst = std::isfinite(rel) ? std::max(e.worst, std::fabs(rel)) : INFINITY;
         ++e.count;
     }
     e.rms = e.count ? std::sqrt(sumSq / static_cast<double>(e.count)) : INFINITY;
+    e.bias = e.count ? e.bias / static_cast<double>(e.count) : INFINITY;
     return e;
 }
 
