@@ -314,8 +314,8 @@ std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int
     // hemisphere comes out low (README, "Differences"). Nor one normalisation
     // over all divisions: a division whose first sample caught a rare bright
     // ray (the sun through a BSDF window) raised its neighbours' priorities,
-    // so lowered its own share and kept that ray at full weight, and a sunny
-    // BSDF room came out 10 % high at -ab 1. Hence the checkerboard.
+    // so lowered its own share and kept that ray at full weight: biased high
+    // (README, "Differences"). Hence the checkerboard.
     std::vector<double> priority(bright.size(), 0.0);
     const bool oddColumns = columns % 2 != 0;
     for (int t = 0; t < rows; ++t) {
@@ -326,10 +326,11 @@ std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int
             if (t + 1 < rows) b[n++] = bright[static_cast<std::size_t>((t + 1) * columns + p)];
             // Across the azimuth's wrap-around an odd column count joins two
             // cells of one colour: that neighbour is left out.
-            if (p > 0 || !oddColumns)
-                b[n++] = bright[static_cast<std::size_t>(t * columns + (p > 0 ? p - 1 : columns - 1))];
+            const int left = p > 0 ? p - 1 : columns - 1;
+            if (p > 0 || !oddColumns) b[n++] = bright[static_cast<std::size_t>(t * columns + left)];
+            const int right = (p + 1) % columns;
             if (p + 1 < columns || !oddColumns)
-                b[n++] = bright[static_cast<std::size_t>(t * columns + (p + 1) % columns)];
+                b[n++] = bright[static_cast<std::size_t>(t * columns + right)];
             double mean = 0;
             for (int i = 0; i < n; ++i) mean += b[i];
             mean /= n;
