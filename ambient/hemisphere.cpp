@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -289,7 +290,11 @@ std::vector<int> AllotCheckerboard(const std::vector<double>& priority, int rows
         }
         const double offset = rng.Uniform();
         const int budget = cut(colour, colour == 0 ? evenCount : count - evenCount, total);
-        if (!(total > 0) || budget <= 0) continue;
+        // An infinite total (radiance differences above about 1e154, whose
+        // squares overflow) would make every share NaN: that colour then
+        // takes no extra samples.
+        if (!(total > 0) || !(total <= std::numeric_limits<double>::max()) || budget <= 0)
+            continue;
         double cumulative = 0;
         for (int t = 0; t < rows; ++t) {
             for (int p = (t + colour) % 2; p < columns; p += 2) {

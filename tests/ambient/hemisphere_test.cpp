@@ -564,6 +564,26 @@ TEST(Hemisphere, ADivisionsExtraSamplesIgnoreItsOwnColour) {
     }
 }
 
+// Radiance differences whose squares overflow (above about 1e154) make a
+// colour's priorities infinite: that colour takes no extra samples, and no
+// count is ever negative or above the request (a NaN share used to become
+// INT_MIN).
+TEST(Hemisphere, OverflowingPrioritiesGiveNoBadCounts) {
+    constexpr int kRows = 6, kColumns = 19, kCount = 60;
+    std::vector<double> bright(kRows * kColumns, 1.0);
+    bright[40] = 1e300;
+    bright[41] = 1e200;
+    Rng rng(3);
+    const std::vector<int> counts =
+        detail::AllotClassicSuperSamples(bright, kRows, kColumns, kCount, rng);
+    int total = 0;
+    for (int n : counts) {
+        EXPECT_GE(n, 0);
+        total += n;
+    }
+    EXPECT_LE(total, kCount);
+}
+
 // The budget rule for records below the first level: all of -as·weight
 // without a target or where the estimated relative error V = sqrt(sum)/(n·B)
 // reaches it, else the budget times (V/target)², rounded at random so that
