@@ -308,33 +308,22 @@ std::vector<int> AllotCheckerboard(const std::vector<double>& priority, int rows
     return counts;
 }
 
-std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int rows,
-                                          int columns, int count, Rng& rng) {
-    // Priorities from each division's neighbours only: the variance of the
-    // first-pass brightness of the divisions around it, so a division an
-    // edge crosses has neighbours on both sides of it. Not Radiance's
-    // estimate, which includes the division's own sample: then a division
-    // whose first sample caught a small bright patch is refined (its mean
-    // pulled down to the truth) while one that missed it stays dark, and the
-    // hemisphere comes out low (README, "Differences"). Nor one normalisation
-    // over all divisions: a division whose first sample caught a rare bright
-    // ray (the sun through a BSDF window) raised its neighbours' priorities,
-    // so lowered its own share and kept that ray at full weight: biased high
-    // (README, "Differences"). Hence the checkerboard.
+std::vector<double> NeighbourVariance(const std::vector<double>& bright, int rows, int columns,
+                                      bool wrap) {
     std::vector<double> priority(bright.size(), 0.0);
-    const bool oddColumns = columns % 2 != 0;
+    // Across the azimuth's wrap-around an odd column count joins two cells
+    // of one colour: that pair are not neighbours.
+    const bool wrapJoins = wrap && columns % 2 == 0;
     for (int t = 0; t < rows; ++t) {
         for (int p = 0; p < columns; ++p) {
             double b[4];
             int n = 0;
             if (t > 0) b[n++] = bright[static_cast<std::size_t>((t - 1) * columns + p)];
             if (t + 1 < rows) b[n++] = bright[static_cast<std::size_t>((t + 1) * columns + p)];
-            // Across the azimuth's wrap-around an odd column count joins two
-            // cells of one colour: that neighbour is left out.
             const int left = p > 0 ? p - 1 : columns - 1;
-            if (p > 0 || !oddColumns) b[n++] = bright[static_cast<std::size_t>(t * columns + left)];
-            const int right = (p + 1) % columns;
-            if (p + 1 < columns || !oddColumns)
+            if (p > 0 || wrapJoins) b[n++] = bright[static_cast<std::size_t>(t * columns + left)];
+            const int right = p + 1 < columns ? p + 1 : 0;
+            if (p + 1 < columns || wrapJoins)
                 b[n++] = bright[static_cast<std::size_t>(t * columns + right)];
             double mean = 0;
             for (int i = 0; i < n; ++i) mean += b[i];
@@ -344,8 +333,23 @@ std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int
             priority[static_cast<std::size_t>(t * columns + p)] = var / n;
         }
     }
-    return AllotCheckerboard(priority, rows, columns, count, rng,
-                             [](int, int budget, double) { return budget; });
+    return priority;
+}
+
+std::vector<int> AllotClassicSuperSamples(const std::vector<double>& bright, int rows,
+                                          int columns, int count, Rng& rng) {
+    // Priorities from each division's neighbours only, so that a division an
+    // edge crosses has neighbours on both sides of it. Not Radiance's
+    // estimate, which includes the division's own sample: then a division
+    // whose first sample caught a small bright patch is refined (its mean
+    // pulled down to the truth) while one that missed it stays dark, and the
+    // hemisphere comes out low (README, "Differences"). Nor one normalisation
+    // over all divisions: a division whose first sample caught a rare bright
+    // ray (the sun through a BSDF window) raised its neighbours' priorities,
+    // so lowered its own share and kept that ray at full weight: biased high
+    // (README, "Differences"). Hence the checkerboard.
+    return AllotCheckerboard(NeighbourVariance(bright, rows, columns, true), rows, columns,
+                             count, rng, [](int, int budget, double) { return budget; });
 }
 
 }  // namespace detail

@@ -130,6 +130,16 @@ std::vector<int> AllotCheckerboard(const std::vector<double>& priority, int rows
                                    int count, Rng& rng,
                                    FunctionRef<int(int colour, int budget, double total)> cut);
 
+/// Each cell's super-sampling priority (brightness²): the variance of the
+/// brightness `bright` of its neighbours above, below, left and right in a
+/// rows × columns grid (row-major), its own left out. With `wrap` the columns
+/// wrap around (the classic sampler's azimuth), except that with an odd
+/// column count the two cells meeting across the wrap-around, of one
+/// checkerboard colour, are not neighbours; so every cell's priority comes
+/// from cells of the other colour only.
+std::vector<double> NeighbourVariance(const std::vector<double>& bright, int rows, int columns,
+                                      bool wrap);
+
 /// The classic sampler's allotment of `count` extra samples over its
 /// divisions, from their first-pass brightness `bright` (row-major, rows ×
 /// columns, columns wrapping around the azimuth): each division's priority is

@@ -134,27 +134,9 @@ bool SampleCell(HessianHemisphere& h, int i, int j, const Vec3& dir, int n, doub
 namespace detail {
 
 std::vector<double> NeighbourContrast(const HessianHemisphere& h) {
-    const int ns = h.ns;
-    std::vector<double> e(h.cells.size(), 0.0);
     std::vector<double> bright(h.cells.size());
     for (std::size_t k = 0; k < bright.size(); ++k) bright[k] = Bright(h.cells[k].radiance);
-    for (int i = 0; i < ns; ++i) {
-        for (int j = 0; j < ns; ++j) {
-            double b[4];
-            int n = 0;
-            if (i > 0) b[n++] = bright[Index(ns, i - 1, j)];
-            if (i + 1 < ns) b[n++] = bright[Index(ns, i + 1, j)];
-            if (j > 0) b[n++] = bright[Index(ns, i, j - 1)];
-            if (j + 1 < ns) b[n++] = bright[Index(ns, i, j + 1)];
-            double mean = 0;
-            for (int k = 0; k < n; ++k) mean += b[k];
-            mean /= n;
-            double var = 0;
-            for (int k = 0; k < n; ++k) var += (b[k] - mean) * (b[k] - mean);
-            e[Index(ns, i, j)] = var / n;
-        }
-    }
-    return e;
+    return NeighbourVariance(bright, h.ns, h.ns, /*wrap=*/false);
 }
 
 std::vector<int> AllotSuperSamples(const HessianHemisphere& h, int count, Rng& rng,
