@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -98,23 +99,38 @@ TEST(CornellFloor, TwoBouncesAtLowSettingsStayClose) {
     }
 }
 
+/// RAYPATH set for one test (where rtrace finds the BSDF files) and put back
+/// as it was however the test ends, early ASSERT returns included.
+class ScopedRaypath {
+  public:
+    explicit ScopedRaypath(const std::string& path) {
+        if (const char* saved = std::getenv("RAYPATH")) before_ = saved;
+        setenv("RAYPATH", path.c_str(), 1);
+    }
+    ~ScopedRaypath() {
+        if (before_) {
+            setenv("RAYPATH", before_->c_str(), 1);
+        } else {
+            unsetenv("RAYPATH");
+        }
+    }
+    ScopedRaypath(const ScopedRaypath&) = delete;
+    ScopedRaypath& operator=(const ScopedRaypath&) = delete;
+
+  private:
+    std::optional<std::string> before_;
+};
+
 /// A BSDF window (an exterior venetian blind as a Klems file) under the
 /// overcast sky, honeybee's daylight-factor recipe on the frozen octree,
 /// against Radiance's path-traced reference (scenes/bsdf_room). Over 8 seeds
 /// lazyrad measured 1.43-1.72 % RMS and 3.8-5.7 % max; real Radiance 5.09 %
 /// RMS (docs/benchmarks.md, "BSDF windows"). The file is found on RAYPATH.
 TEST(BsdfRoom, DaylightFactorRecipeStaysClose) {
-    const char* saved = std::getenv("RAYPATH");
-    const std::string before = saved ? saved : "";
-    setenv("RAYPATH", (kSource + "/scenes/bsdf_room").c_str(), 1);
+    const ScopedRaypath raypath(kSource + "/scenes/bsdf_room");
     auto rows = RunRows("-I -aa .1 -ab 2 -ad 2048 -ar 64 " + kSource +
                             "/scenes/bsdf_room/bsdf_room_overcast.oct",
                         "scenes/bsdf_room/grid.pts");
-    if (saved) {
-        setenv("RAYPATH", before.c_str(), 1);
-    } else {
-        unsetenv("RAYPATH");
-    }
     const auto e = rt::testing::CompareWithReference(
         rows, kSource + "/scenes/bsdf_room/ref/grid_I_ab2_sky.txt");
     ASSERT_EQ(e.count, 96u);
@@ -133,9 +149,7 @@ TEST(BsdfRoom, DaylightFactorRecipeStaysClose) {
 /// "Unbiased super-sampling"; seeds 1-8: 6.7-11.9 %, real Radiance 37 %).
 /// Mean of the two seeds below 11 % RMS, bias within 2 %.
 TEST(BsdfRoom, SunThroughTheBlindStaysClose) {
-    const char* saved = std::getenv("RAYPATH");
-    const std::string before = saved ? saved : "";
-    setenv("RAYPATH", (kSource + "/scenes/bsdf_room").c_str(), 1);
+    const ScopedRaypath raypath(kSource + "/scenes/bsdf_room");
     double rms = 0, bias = 0;
     for (const char* seed : {"0", "1"}) {
         const auto rows = RunRows(std::string("-seed ") + seed +
@@ -149,11 +163,6 @@ TEST(BsdfRoom, SunThroughTheBlindStaysClose) {
                     100 * e.rms, 100 * e.worst, 100 * e.bias);
         rms += e.rms / 2;
         bias += e.bias / 2;
-    }
-    if (saved) {
-        setenv("RAYPATH", before.c_str(), 1);
-    } else {
-        unsetenv("RAYPATH");
     }
     EXPECT_LT(rms, 0.11);
     EXPECT_LT(std::fabs(bias), 0.02);
