@@ -14,28 +14,14 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "scene/fgetval.h"
 #include "image/hdr.h"
 
 namespace rt {
 namespace {
 
-/// fgetval.c reads words into a 64-byte buffer: a word this long or longer
-/// is a format error.
-constexpr std::size_t kMaxWordLength = 63;
-
-bool IsSpace(char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
-}
-bool IsDigit(char c) { return c >= '0' && c <= '9'; }
-
-/// Radiance's isint(): an optional sign and at least one digit.
-bool IsIntegerWord(std::string_view w) {
-    std::size_t k = 0;
-    if (k < w.size() && (w[k] == '+' || w[k] == '-')) ++k;
-    const std::size_t digits = k;
-    while (k < w.size() && IsDigit(w[k])) ++k;
-    return k > digits && k == w.size();
-}
+using fgetval::IsDigit;
+using fgetval::IsIntegerWord;
 
 /// Radiance's isflt(): sign, digits, an optional point and digits (at least
 /// one digit in all), an optional exponent with at least one digit. No
@@ -60,22 +46,18 @@ bool IsFloatWord(std::string_view w) {
     return k == w.size();
 }
 
-/// The words of a data file as fgetval() sees them: white space separates
-/// them, '#' (anywhere, even inside a word) starts a comment to the end of
-/// the line. Radiance tells "unexpected EOF" from "bad format" by whether its
-/// reads have reached the end of the file (feof), so this tracks that too.
+/// The words of a data file as fgetval() sees them (fgetval::Words), with
+/// data.c's errors: "unexpected EOF" once the end has been read, else "bad
+/// format".
 class WordReader {
   public:
     WordReader(std::string_view text, const std::string& path, const std::string& name)
-        : text_(text), path_(path), name_(name) {}
+        : words_(text), path_(path), name_(name) {}
 
     int ReadInt(const char* what) {
         const std::string_view w = Next(what);
         if (!IsIntegerWord(w)) Fail(std::string("expected an integer ") + what, w);
-        // atoi() on glibc: strtol (64-bit long, saturating), then truncated to int.
-        const std::string word(w);
-        const long v = std::strtol(word.c_str(), nullptr, 10);
-        return static_cast<int>(static_cast<unsigned int>(static_cast<unsigned long>(v)));
+        return fgetval::Atoi(w);
     }
 
     float ReadFloat(const char* what) {
@@ -88,54 +70,32 @@ class WordReader {
     /// Radiance's scanerr: "unexpected EOF" once the end has been read, else
     /// "bad format".
     [[noreturn]] void Fail(const std::string& detail, std::string_view word = {}) const {
-        std::string message = (atEnd_ ? "unexpected EOF" : "bad format") +
+        std::string message = (words_.atEnd() ? "unexpected EOF" : "bad format") +
                               std::string(" in data file \"") + name_ + "\"";
-        if (!atEnd_) {
+        if (!words_.atEnd()) {
             message += ": " + detail;
             if (!word.empty()) message += ", not \"" + std::string(word.substr(0, 40)) + "\"";
         }
-        ThrowUserError(FileLoc{path_, wordLine_}, message);
+        ThrowUserError(FileLoc{path_, words_.line()}, message);
     }
 
-    int line() const { return line_; }
+    int line() const { return words_.line(); }
 
   private:
     std::string_view Next(const char* what) {
-        for (;;) {
-            while (pos_ < text_.size() && IsSpace(text_[pos_])) Advance();
-            if (pos_ == text_.size()) break;
-            if (text_[pos_] != '#') {
-                const std::size_t start = pos_;
-                wordLine_ = line_;
-                while (pos_ < text_.size() && !IsSpace(text_[pos_]) && text_[pos_] != '#') {
-                    ++pos_;
-                    if (pos_ - start > kMaxWordLength) {
-                        Fail(std::string("word longer than 63 characters ") + what);
-                    }
-                }
-                if (pos_ == text_.size()) atEnd_ = true;
-                return text_.substr(start, pos_ - start);
-            }
-            while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+        std::string_view word;
+        switch (words_.Next(word)) {
+            case fgetval::Words::Status::kWord: return word;
+            case fgetval::Words::Status::kTooLong:
+                Fail(std::string("word longer than 63 characters ") + what);
+            case fgetval::Words::Status::kEnd: break;
         }
-        atEnd_ = true;
-        // The end of the file is on the last line, not after its newline.
-        wordLine_ = std::max(1, line_ - (!text_.empty() && text_.back() == '\n' ? 1 : 0));
         Fail(std::string("missing ") + what);
     }
 
-    void Advance() {
-        if (text_[pos_] == '\n') ++line_;
-        ++pos_;
-    }
-
-    std::string_view text_;
+    fgetval::Words words_;
     const std::string& path_;
     const std::string& name_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
-    int wordLine_ = 1;
-    bool atEnd_ = false;
 };
 
 /// More values than any text can hold: counts whose product reaches this only
