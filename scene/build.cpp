@@ -184,7 +184,12 @@ const char* PatternTypeName(PatternType type) {
     for (const PatternSpec& spec : kPatternSpecs) {
         if (spec.type == type) return spec.name;
     }
-    return "unknown";
+    switch (type) {
+        case PatternType::BrightText: return "brighttext";
+        case PatternType::ColorText: return "colortext";
+        case PatternType::MixText: return "mixtext";
+        default: return "unknown";
+    }
 }
 
 /// An `instance` or `mesh` primitive as written, in the space of the scene
@@ -217,6 +222,8 @@ public:
             AddAlias(object);
         } else if (FindPatternSpec(object.type) != nullptr) {
             AddPattern(object);
+        } else if (IsTextType(object.type)) {
+            AddTextPattern(object);
         } else if (!IsSurfaceObjectType(object.type)) {
             AddMaterial(object);
         } else {
@@ -442,20 +449,7 @@ private:
             pattern.patternFromWorld = Inverse(xf.transform);
             pattern.patternFromWorld.scale = std::fabs(pattern.patternFromWorld.scale);
         }
-        if (spec.kind == ModifierKind::Mixture) {
-            // Each side is the last definition of its name before the
-            // mixture (lastmod()), or void.
-            ModifierChain* sides[2] = {&pattern.fore, &pattern.back};
-            for (std::size_t k = 0; k < 2; ++k) {
-                if (words[k] == "void") continue;
-                const auto def = Lookup(words[k]);
-                if (!def) {
-                    ThrowUserError(object.loc, "undefined modifier \"" + PrintableWord(words[k]) +
-                                                   "\" for " + Describe(object));
-                }
-                *sides[k] = ChainFrom(*def);
-            }
-        }
+        if (spec.kind == ModifierKind::Mixture) ResolveMixtureSides(object, pattern);
         cal::Program& functions = Functions();
         const std::string context = functions.LoadFile(words[fileAt], searchPath_, where);
         if (!spec.coordinateFunctions) {
@@ -495,6 +489,84 @@ private:
         return pattern;
     }
 
+    /// A mixture's `fore` and `back` chains from its first two strings: each
+    /// the last definition of its name before the mixture (lastmod()), or
+    /// void.
+    void ResolveMixtureSides(const SceneObject& object, Pattern& pattern) const {
+        const auto& words = object.sargs;
+        ModifierChain* sides[2] = {&pattern.fore, &pattern.back};
+        for (std::size_t k = 0; k < 2; ++k) {
+            if (words[k] == "void") continue;
+            const auto def = Lookup(words[k]);
+            if (!def) {
+                ThrowUserError(object.loc, "undefined modifier \"" + PrintableWord(words[k]) +
+                                               "\" for " + Describe(object));
+            }
+            *sides[k] = ChainFrom(*def);
+        }
+    }
+
+    /// brighttext `font textfile` or `font . words…` with 11 reals (anchor,
+    /// right, down, foreground and background factors) and an optional
+    /// spacing; colortext the same with colours (15 reals); mixtext `fore
+    /// back font …` with 9 (text.c). Radiance reads the text and the font at
+    /// the first ray that meets the pattern; here when the scene loads.
+    void AddTextPattern(const SceneObject& object) {
+        const bool mix = object.type == "mixtext";
+        const bool colour = object.type == "colortext";
+        const std::size_t fontAt = mix ? 2 : 0;
+        const std::size_t textAt = fontAt + 1;
+        const std::size_t reals = mix ? 9 : colour ? 15 : 11;
+        const auto& words = object.sargs;
+        const auto& a = object.rargs;
+        if (words.size() < textAt + 1 || a.size() < reals) BadArgs(object);
+        Pattern pattern;
+        pattern.name = object.name;
+        pattern.type = mix ? PatternType::MixText : colour ? PatternType::ColorText
+                                                            : PatternType::BrightText;
+        pattern.kind = mix ? ModifierKind::Mixture : ModifierKind::Pattern;
+        pattern.owner = Describe(object);
+        pattern.args = a;
+        pattern.loc = object.loc;
+        if (mix) ResolveMixtureSides(object, pattern);
+        const Vec3 right(a[3], a[4], a[5]), down(a[6], a[7], a[8]);
+        if (!TextBlock::SpansPlane(right, down)) Fail(object, "illegal motion vector");
+        std::vector<std::string> lines;
+        if (words.size() > textAt + 1) {
+            // One line: the words after the (ignored) file name, joined by spaces.
+            std::string line;
+            for (std::size_t k = textAt + 1; k < words.size(); ++k) {
+                if (k > textAt + 1) line += ' ';
+                line += words[k];
+            }
+            lines.push_back(std::move(line));
+        } else {
+            const auto file = cal::FindFunctionFile(words[textAt], searchPath_);
+            if (!file) {
+                throw Error(Error::Kind::System, object.loc,
+                            Describe(object) + ": cannot find text file \"" +
+                                PrintableWord(words[textAt]) + "\"");
+            }
+            lines = SplitTextLines(file->text);
+        }
+        std::shared_ptr<const Font> font;
+        try {
+            font = fonts_.Get(words[fontAt]);
+        } catch (const Error& e) {
+            Fail(object, std::string("font load error: ") + e.what());
+        }
+        std::optional<double> spacing;
+        if (a.size() > reals) spacing = a[reals];
+        const Rgb fore = colour ? Rgb(a[9], a[10], a[11]) : Rgb::Grey(mix ? 1.0 : a[9]);
+        const Rgb back = colour ? Rgb(a[12], a[13], a[14]) : Rgb::Grey(mix ? 1.0 : a[10]);
+        pattern.text = std::make_shared<const TextPattern>(TextPattern{
+            TextBlock(font, lines, right, down, spacing), Vec3(a[0], a[1], a[2]), fore, back});
+        const int modifier = ResolveModifier(object);
+        CheckMixtureModifier(object, pattern, modifier);
+        scene_.patterns.push_back(std::move(pattern));
+        Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
+    }
+
     /// The data files (sargs after the function names) or the picture of a
     /// *data / *pict pattern, each file loaded once per scene.
     void LoadData(const PatternSpec& spec, const SceneObject& object, DataLookup& data) {
@@ -517,11 +589,7 @@ private:
     void AddMaterial(const SceneObject& object) {
         const MaterialSpec* spec = FindMaterialSpec(object.type);
         if (spec == nullptr) {
-            ThrowUserError(object.loc, "unsupported material type '" + object.type + "'" +
-                                           (IsTextType(object.type)
-                                                ? " (text patterns need Radiance's font files, "
-                                                  "which lazyrad does not read)"
-                                                : ""));
+            ThrowUserError(object.loc, "unsupported material type '" + object.type + "'");
         }
         const int modifier = ResolveModifier(object);
         const int nreals = static_cast<int>(object.rargs.size());
@@ -1097,6 +1165,7 @@ private:
     /// Per prototype, the placements written inside it.
     std::vector<std::vector<Placement>> prototypePlacements_;
     DataFileCache dataFiles_{searchPath_};
+    FontCache fonts_{searchPath_};
     BsdfFileCache bsdfFiles_{searchPath_};
     std::shared_ptr<cal::Program> functions_;
     std::vector<ModifierDef> defs_;

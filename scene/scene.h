@@ -5,9 +5,10 @@
 // Plain data; built by LoadScene() (scene/loader.h) from `.rad` files.
 //
 // Only what lazyrad can shade is represented: materials, the patterns
-// brightfunc, colorfunc, brightdata, colordata and colorpict, the textures
-// texfunc and texdata, the mixtures mixfunc, mixdata and mixpict. A scene using any other modifier type is
-// rejected at load time with "file:line: unsupported material type 'X'".
+// brightfunc, colorfunc, brightdata, colordata, colorpict, brighttext and
+// colortext, the textures texfunc and texdata, the mixtures mixfunc, mixdata,
+// mixpict and mixtext. A scene using any other modifier type is rejected at
+// load time with "file:line: unsupported material type 'X'".
 #pragma once
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include "core/rgb.h"
 #include "core/vecmath.h"
 #include "scene/data_file.h"
+#include "scene/font.h"
 #include "scene/bsdf_data.h"
 
 namespace rt {
@@ -187,7 +189,7 @@ struct Material {
 
 enum class PatternType {
     BrightFunc, ColorFunc, BrightData, ColorData, ColorPict, TexFunc, TexData, MixFunc, MixData,
-    MixPict,
+    MixPict, BrightText, ColorText, MixText,
     Orientation,  // an anisotropic material's u direction: a vector, turned as a texture's
     Brdf,         // a BRDF material's function, with or without data
     Brtd,         // BRTDfunc's six expressions and three functions (one per channel)
@@ -205,6 +207,17 @@ enum class ModifierKind {
 struct ModifierChain {
     std::vector<int> modifiers;  // indices into Scene::patterns, in chain order
     int material = -1;           // index into Scene::materials; -1: none (void)
+};
+
+/// brighttext, colortext and mixtext (radiance-functions.md §11.10): the
+/// lines on their plane, in the space of the object they modify (an
+/// instance's; they take no transform of their own), and what they
+/// multiply the pattern colour by on and off the glyphs (mixtext: none, it
+/// shades with its fore or back side).
+struct TextPattern {
+    TextBlock block;
+    Vec3 anchor;                 // the upper left corner of the first character
+    Rgb foreground, background;  // brighttext: grey
 };
 
 /// A function modifier (radiance-functions.md §11.2, §11.4, §11.8, §11.9):
@@ -233,6 +246,9 @@ struct Pattern {
     /// mixfunc: the chains from its `fore` and `back` modifiers as defined
     /// before the mixture (empty for void).
     ModifierChain fore, back;
+    /// The text patterns' lines and colours; null for the others, which
+    /// evaluate `values`.
+    std::shared_ptr<const TextPattern> text;
     FileLoc loc;
 };
 

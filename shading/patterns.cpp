@@ -332,11 +332,33 @@ std::optional<Rgb> EvaluateBrdfColour(const Scene& scene, ThreadState& ts, const
     return value;
 }
 
+namespace {
+
+/// A text pattern or mixture at this ray (Radiance's do_text()): ink or not
+/// at the hit point in the object's space (an instance's; text patterns take
+/// no transform of their own). A pattern multiplies pcol by its foreground
+/// or background; a mixture shades with its fore or back side alone. True
+/// when that side reached a material.
+bool ApplyText(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Pattern& modifier) {
+    const TextPattern& text = *modifier.text;
+    const Vec3 p = ray.objectFromRender ? ray.objectFromRender->Point(ray.rop) : ray.rop;
+    const bool ink = text.block.Foreground(p - text.anchor);
+    if (modifier.kind == ModifierKind::Mixture) return Mix(tree, ts, ray, modifier, ink ? 1.0 : 0.0);
+    ray.pcol *= ink ? text.foreground : text.background;
+    return false;
+}
+
+}  // namespace
+
 bool ApplyModifierChain(const RayTree& tree, ThreadState& ts, TracedRay& ray,
                         const std::vector<int>& modifiers) {
     const Scene& scene = tree.setup().scene;
     for (const int index : modifiers) {
         const Pattern& modifier = scene.patterns[static_cast<std::size_t>(index)];
+        if (modifier.text) {
+            if (ApplyText(tree, ts, ray, modifier)) return true;
+            continue;
+        }
         const PatternSpace space(ray, modifier);
         double v[3] = {1.0, 1.0, 1.0};
         if (!EvaluateModifier(scene, ts, ray, index, space, v, true)) continue;

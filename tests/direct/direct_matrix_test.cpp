@@ -55,6 +55,10 @@
 //   through peak, proxies, -i, the sampled rays at -ss 1 and 4, -ab 1, load
 //   errors), answers and the files in tests/data/bsdf_tree/, RAYPATH that
 //   folder.
+// - brighttext, colortext and mixtext (tests/direct/generate_text.py: a font
+//   of its own, every spacing, a line of words and a file of lines, skewed
+//   frames, on lights and plastic, mixtures, an alias, an instance, load
+//   errors), answers and the files in tests/data/text/, RAYPATH that folder.
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -171,6 +175,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("medium")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("bsdf")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("bsdf_tree")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("text")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -253,7 +258,7 @@ Outcome RunLazyrad(const MatrixRun& r) {
     // files' cases find their .dat, .cal and pictures in their own folder.
     if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf" ||
         r.dataset == "clip" || r.dataset == "ashik" || r.dataset == "bsdf" ||
-        r.dataset == "bsdf_tree") {
+        r.dataset == "bsdf_tree" || r.dataset == "text") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");
@@ -380,6 +385,7 @@ INSTANTIATE_TEST_SUITE_P(Medium, DirectMatrix, ::testing::ValuesIn(Groups("mediu
 INSTANTIATE_TEST_SUITE_P(Bsdf, DirectMatrix, ::testing::ValuesIn(Groups("bsdf")), GroupName);
 INSTANTIATE_TEST_SUITE_P(BsdfTree, DirectMatrix, ::testing::ValuesIn(Groups("bsdf_tree")),
                          GroupName);
+INSTANTIATE_TEST_SUITE_P(Text, DirectMatrix, ::testing::ValuesIn(Groups("text")), GroupName);
 
 // rtrace (this process's rt::Run) with `options` on `scene`, written to a
 // temporary file, and `rays` on standard input, RAYPATH unset (lazyrad's own
@@ -478,6 +484,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("medium").size(), 3u);
     EXPECT_GE(Groups("bsdf").size(), 8u);
     EXPECT_GE(Groups("bsdf_tree").size(), 6u);
+    EXPECT_GE(Groups("text").size(), 5u);
 }
 
 }  // namespace

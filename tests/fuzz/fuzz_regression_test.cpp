@@ -28,6 +28,7 @@ extern "C" int FuzzOctreeEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzMeshEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzDatafileEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzBsdfEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzFontEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -95,6 +96,10 @@ TEST(FuzzRegression, DatafileCorpusAndRegressions) {
 
 TEST(FuzzRegression, BsdfCorpusAndRegressions) {
     EXPECT_GT(Replay("bsdf", &FuzzBsdfEntry), 0u);
+}
+
+TEST(FuzzRegression, FontCorpusAndRegressions) {
+    EXPECT_GT(Replay("font", &FuzzFontEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

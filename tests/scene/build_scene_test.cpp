@@ -87,10 +87,16 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: unsupported material type 'prism2'");
     EXPECT_EQ(BuildError("void prism1 p 5 1 0 0 0 . 0 1 1\n"),
               "t.rad:1: unsupported material type 'prism1'");
-    // The text types need Radiance's font files.
-    EXPECT_EQ(BuildError("void brighttext t 2 helvet.fnt text.txt 0 9 0 0 0 1 0 0 0 0 1\n"),
-              "t.rad:1: unsupported material type 'brighttext' (text patterns need Radiance's "
-              "font files, which lazyrad does not read)");
+    // The text types read their font when the scene loads (Radiance: at
+    // the first ray that meets them), and check their frame and arguments.
+    EXPECT_EQ(BuildError("void brighttext t 3 nosuch.fnt . IO 0 11 0 1 0 1 0 0 0 -1 0 5 .5\n"),
+              "t.rad:1: brighttext \"t\": font load error: cannot find font file \"nosuch.fnt\"");
+    EXPECT_EQ(BuildError("void colortext t 3 nosuch.fnt . IO 0 15 0 1 0 1 0 0 2 0 0 1 1 1 0 0 0\n"),
+              "t.rad:1: colortext \"t\": illegal motion vector");
+    EXPECT_EQ(BuildError("void mixtext t 3 void void nosuch.fnt 0 9 0 1 0 1 0 0 0 -1 0\n"),
+              "t.rad:1: bad number of arguments for mixtext \"t\"");
+    EXPECT_EQ(BuildError("void mixtext t 4 red void f.fnt . 0 9 0 1 0 1 0 0 0 -1 0\n"),
+              "t.rad:1: undefined modifier \"red\" for mixtext \"t\"");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
