@@ -17,8 +17,8 @@
 # slanted edges and extents inside one half of the cell, characters the
 # font lacks, on a light seen straight and on plastic under a lamp, a
 # mixtext of two lights, of a pattern and void, the pattern inside an
-# instance, and the load errors. Each case traces a grid of rays over the
-# text at -ab 0, so every answer is exact.
+# instance and on a distant source, and the load errors. Each case traces
+# a grid of rays over the text at -ab 0, so every answer is exact.
 import os
 import subprocess
 
@@ -153,6 +153,13 @@ def main():
                        check=True, env=ENV, cwd=OUT)
     write("instance.rad", "void instance i1 9 inst_obj.oct -rz 8 -t .5 -.3 0 -s .9\n0\n0\n")
     runs.append(("textinstance", "instance", ["instance.rad"], "line.rays", 1, "-ab 0", "exact"))
+
+    # On a distant source: the point is the ray's origin, in both programs.
+    write("sky.rad", f"void brighttext t 3 block.fnt . IO\n0\n11 {frame} 5 .5\n"
+          "t glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 -1 180\n")
+    write("sky.rays", "0.5 0.5 0 0 0 -1\n0.1 0.5 0 0 0 -1\n1.5 0.5 3 0 0 -1\n"
+          "0.5 0.5 2 0.1 0 -1\n1.45 0.2 -4 0.3 0.2 -1\n")
+    runs.append(("textsky", "source", ["sky.rad"], "sky.rays", 1, "-ab 0", "exact"))
 
     # 6. Errors.
     errors = {
