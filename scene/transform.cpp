@@ -197,6 +197,68 @@ SceneObject TransformSceneObject(const SceneObject& object, const XformSettings&
     return out;
 }
 
+namespace {
+
+/// `n` reals from `r` at `first`, each as `format` (" %18.12g" and the like).
+void AppendReals(std::string& text, const std::vector<double>& r, std::size_t first,
+                 std::size_t n, const char* format) {
+    char number[64];
+    for (std::size_t i = first; i < first + n && i < r.size(); ++i) {
+        std::snprintf(number, sizeof number, format, r[i]);
+        text += number;
+    }
+}
+
+/// The real arguments as Radiance's xform writes each type (its o_face,
+/// o_cone, o_cylinder, o_ring, m_spot, m_dielectric, m_interface, m_mist,
+/// text and o_default), after the count.
+void AppendRealArgs(std::string& text, const std::string& type, const std::vector<double>& r) {
+    const std::size_t n = r.size();
+    text += std::to_string(n);
+    const char* wide = " %18.12g";
+    const bool cone = type == "cone" || type == "cup" || type == "ring";
+    const bool cylinder = type == "cylinder" || type == "tube";
+    if ((type == "polygon" && n > 0) || (cone && n == 8) || (cylinder && n == 7)) {
+        text += '\n';
+        for (std::size_t i = 0; i < n; i += 3) {
+            AppendReals(text, r, i, 3, wide);
+            text += '\n';
+        }
+    } else if (type == "spotlight" && n == 7) {
+        AppendReals(text, r, 0, 4, wide);
+        text += "\n\t";
+        AppendReals(text, r, 4, 1, "%18.12g");
+        AppendReals(text, r, 5, 2, wide);
+        text += '\n';
+    } else if (type == "dielectric" && n == 5) {
+        AppendReals(text, r, 0, 5, " %12.6g");
+        text += '\n';
+    } else if (type == "interface" && n == 8) {
+        for (std::size_t i = 0; i < 8; i += 4) {
+            text += '\n';
+            AppendReals(text, r, i, 1, "%12.6g");
+            AppendReals(text, r, i + 1, 3, " %12.6g");
+        }
+        text += '\n';
+    } else if (type == "mist") {
+        AppendReals(text, r, 0, n, " %12.6g");
+        text += '\n';
+    } else if (IsTextType(type) && n >= 9) {
+        // Anchor, right and down vectors one to a line, then the rest three
+        // to a line.
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i % 3 == 0) text += '\n';
+            AppendReals(text, r, i, 1, wide);
+        }
+        text += '\n';
+    } else {
+        AppendReals(text, r, 0, n, wide);
+        text += '\n';
+    }
+}
+
+}  // namespace
+
 std::string FormatSceneObject(const SceneObject& object) {
     // Appends only: GCC 12 reports a false -Wrestrict for "literal" + temporary.
     std::string text = "\n";
@@ -215,19 +277,11 @@ std::string FormatSceneObject(const SceneObject& object) {
     text += std::to_string(object.sargs.size());
     for (const std::string& s : object.sargs) {
         text += ' ';
-        text += QuoteWord(s);
+        // mist's source names go out as they are (m_mist), others quoted as fputword() does.
+        text += object.type == "mist" ? s : QuoteWord(s);
     }
     text += "\n0\n";
-    text += std::to_string(object.rargs.size());
-    char number[64];
-    const bool byVertex = object.type == "polygon";
-    if (byVertex && !object.rargs.empty()) text += "\n";
-    for (std::size_t i = 0; i < object.rargs.size(); ++i) {
-        std::snprintf(number, sizeof number, " %18.12g", object.rargs[i]);
-        text += number;
-        if (byVertex && i % 3 == 2) text += "\n";
-    }
-    if (!byVertex || object.rargs.empty()) text += "\n";
+    AppendRealArgs(text, object.type, object.rargs);
     return text;
 }
 

@@ -44,8 +44,10 @@ struct XformSettings {
 /// argument counts do not fit the type.
 SceneObject TransformSceneObject(const SceneObject& object, const XformSettings& settings);
 
-/// Radiance scene text for one primitive, preceded by a blank line, with reals
-/// as "%18.12g" (polygons one vertex per line), as xform and genbox write it.
+/// Radiance scene text for one primitive, preceded by a blank line, laid out
+/// as Radiance's xform writes each type: reals as " %18.12g", polygons, cones,
+/// cylinders, rings and text patterns three to a line, a spotlight's aim on a
+/// line of its own, dielectric, interface and mist as "%12.6g".
 std::string FormatSceneObject(const SceneObject& object);
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "scene/reader.h"
 #include "scene_test_util.h"
@@ -120,6 +121,25 @@ TEST(Xform, HeaderCommentsAndPipeline) {
                                0),
               0u)
         << run.output;
+}
+
+// Every type Radiance's xform writes its own way (cones, cylinders, rings and
+// text three reals to a line, a spotlight's aim after a tab, dielectric,
+// interface and mist in %12.6g, mist's source names unquoted): real
+// Radiance 5.4a's output of tests/data/xform/all_types.rad, byte for byte.
+TEST(Xform, LaysOutEveryTypeAsRadiance) {
+    const std::string dir = RT_SOURCE_DIR "/tests/data/xform";
+    const std::pair<const char*, const char*> cases[] = {
+        {"-rz 30 -s 2 -t 1 2 3", "rz30_s2_t.txt"}, {"-I -n pre -mx -s .5", "inv_prefix_mx.txt"}};
+    for (const auto& [args, file] : cases) {
+        const RunResult run =
+            RunShell("cd '" + dir + "' && xform " + args + " all_types.rad");
+        ASSERT_EQ(run.status, 0) << run.output;
+        std::ifstream in(dir + "/" + file);
+        const std::string want((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        ASSERT_FALSE(want.empty()) << file;
+        EXPECT_EQ(run.output, want) << args;
+    }
 }
 
 TEST(Xform, MirrorKeepsFacesOutward) {
