@@ -6,8 +6,10 @@
 #     JOB  floor edges fast daylit shelf df dense dense_tool
 #
 # Prints one line: the job, the mean of bench/score.py's RMS error (the raw
-# figure, reference noise included), each seed's error, the mean user CPU
-# seconds and the records per level of each run (rtrace -t summary).
+# figure, reference noise included), each seed's error, the mean bias over the
+# seeds with its standard error, the mean user CPU seconds and the records per
+# level of each run (rtrace -t summary). EXTRA OPTIONS come after the job's
+# own, so they override them (-aa .2 replaces the job's -aa).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 lz=${1:?usage: seed_errors.sh RTRACE JOB "SEEDS" [OPTIONS...]}
@@ -28,17 +30,22 @@ case $job in
   *) echo "seed_errors.sh: unknown job '$job'" >&2; exit 2 ;;
 esac
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-errors="" cpus="" records=""
+errors="" cpus="" records="" biases=""
 for s in $seeds; do
   # shellcheck disable=SC2086
-  /usr/bin/time -f %U -o "$tmp/t" "$lz" "$@" -seed "$s" -t 1000000 -h $o "$scene" < "$pts" > "$tmp/out" 2> "$tmp/err"
-  e=$(python3 "$root/bench/score.py" "$ref" "$tmp/out" | tail -1 | sed -n 's/^rms \([0-9.]*\)%.*/\1/p')
+  /usr/bin/time -f %U -o "$tmp/t" "$lz" -seed "$s" -t 1000000 -h $o "$@" "$scene" < "$pts" > "$tmp/out" 2> "$tmp/err"
+  score=$(python3 "$root/bench/score.py" "$ref" "$tmp/out" | tail -1)
+  e=$(sed -n 's/^rms \([0-9.]*\)%.*/\1/p' <<< "$score")
+  biases="$biases $(sed -n 's/.*bias \([-+0-9.]*\)%.*/\1/p' <<< "$score")"
   errors="$errors $e"; cpus="$cpus $(tail -1 "$tmp/t")"
   records="$records $(sed -n 's/.*records per level \([0-9/]*\).*/\1/p' "$tmp/err" | tail -1)"
 done
-python3 - "$job" "$errors" "$cpus" "$records" <<'PY'
+python3 - "$job" "$errors" "$cpus" "$records" "$biases" <<'PY'
 import sys, statistics as st
 job, errors, cpus, records = sys.argv[1], sys.argv[2].split(), sys.argv[3].split(), sys.argv[4]
 e = [float(x) for x in errors]
-print(f"{job}: rms mean {st.mean(e):.3f} % ({' '.join(errors)}) cpu mean {st.mean(float(c) for c in cpus):.2f} s, records{records}")
+b = [float(x) for x in sys.argv[5].split()]
+sem = st.stdev(b) / len(b) ** 0.5 if len(b) > 1 else 0.0
+print(f"{job}: rms mean {st.mean(e):.3f} % ({' '.join(errors)}) bias mean {st.mean(b):+.2f} % "
+      f"(± {sem:.2f}) cpu mean {st.mean(float(c) for c in cpus):.2f} s, records{records}")
 PY
