@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: MIT
 //
 // genbox: writes a box (parallelepiped from the origin to xsize ysize zsize) as
-// Radiance polygons, with the same identifiers, vertex order and number format
-// as Radiance's genbox.c, so scenes made with either are interchangeable.
+// Radiance polygons, with the same identifiers, vertices and number format
+// as Radiance 5.4a's genbox, so scenes made with either are interchangeable.
 //
-//   genbox material name xsize ysize zsize [-i] [-b bevel | -r round]
+//   genbox material name xsize ysize zsize [-i] [-b bevel | -r round [-n nsegs][-s]]
+//
+// Radiance's genbox writes a rounded box of more than two segments an edge
+// (-n above 2, or -r with -i and no -n) and its -o output through its object
+// library as a polygon mesh; those are refused here.
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -28,13 +33,16 @@ struct Box {
 // A vertex code holds one bit per axis for "far side" (bits 0-2) and, with
 // bevels, one bit per axis for "inset by the bevel" read as genbox.c does:
 // after shifting the code right once per axis, bit 3 selects the inset form.
+// -i mirrors every vertex through the box's centre (the far side becomes the
+// near one), which turns every face inwards and keeps the vertex order.
 void PrintVertex(const Box& box, int code) {
     for (int axis = 0; axis < 3; ++axis) {
+        const bool far = ((code & 1) != 0) != box.reverse;
         double value;
         if (code & 010) {
-            value = (code & 1) ? box.size[axis] - box.bevel : box.bevel;
+            value = far ? box.size[axis] - box.bevel : box.bevel;
         } else {
-            value = (code & 1) ? box.size[axis] : 0.0;
+            value = far ? box.size[axis] : 0.0;
         }
         std::printf("\t%18.12g", value);
         code >>= 1;
@@ -45,35 +53,35 @@ void PrintVertex(const Box& box, int code) {
 void Side(const Box& box, int a, int b, int c, int d) {
     std::printf("\n%s polygon %s.%c%c%c%c\n0\n0\n12\n", box.material.c_str(), box.name.c_str(),
                 kLetters[a], kLetters[b], kLetters[c], kLetters[d]);
-    const int order[4] = {a, b, c, d};
-    for (int i = 0; i < 4; ++i) PrintVertex(box, order[box.reverse ? 3 - i : i]);
+    for (const int v : {a, b, c, d}) PrintVertex(box, v);
 }
 
 void Corner(const Box& box, int a, int b, int c) {
     std::printf("\n%s polygon %s.%c%c%c\n0\n0\n9\n", box.material.c_str(), box.name.c_str(),
                 kLetters[a], kLetters[b], kLetters[c]);
-    const int order[3] = {a, b, c};
-    for (int i = 0; i < 3; ++i) PrintVertex(box, order[box.reverse ? 2 - i : i]);
+    for (const int v : {a, b, c}) PrintVertex(box, v);
 }
 
-// Rounded edges and corners: with -i they face inwards (tube, bubble).
+// Rounded edges and corners, named by their vertices as the faces are.
 void Cylinder(const Box& box, int v0, int v1) {
-    std::printf("\n%s %s %s.%c%c\n0\n0\n7\n", box.material.c_str(),
-                box.reverse ? "tube" : "cylinder", box.name.c_str(), v0 + '0', v1 + '0');
+    std::printf("\n%s cylinder %s.%c%c\n0\n0\n7\n", box.material.c_str(), box.name.c_str(),
+                kLetters[v0], kLetters[v1]);
     PrintVertex(box, v0);
     PrintVertex(box, v1);
     std::printf("\t%18.12g\n", box.bevel);
 }
 
 void Sphere(const Box& box, int v0) {
-    std::printf("\n%s %s %s.%c\n0\n0\n4\n", box.material.c_str(),
-                box.reverse ? "bubble" : "sphere", box.name.c_str(), v0 + '0');
+    std::printf("\n%s sphere %s.%c\n0\n0\n4\n", box.material.c_str(), box.name.c_str(),
+                kLetters[v0]);
     PrintVertex(box, v0);
     std::printf("\t%18.12g\n", box.bevel);
 }
 
 int Usage(const char* program) {
-    std::fprintf(stderr, "Usage: %s material name xsize ysize zsize [-i] [-b bevel | -r round]\n",
+    std::fprintf(stderr,
+                 "Usage: %s material name xsize ysize zsize [-i] [-b bevel | -r round [-n "
+                 "nsegs][-s]] [-o]\n",
                  program);
     return 1;
 }
@@ -149,23 +157,46 @@ int main(int argc, char** argv) {
             return 1;
         }
         box.size[i] = *value;
+        if (!(box.size[i] > 0)) return Usage(program);  // as Radiance's
     }
+    int segments = 1;  // -n: segments per rounded edge
     for (int i = 6; i < argc; ++i) {
         const std::string option = argv[i];
         if (option == "-i") {
             box.reverse = true;
+        } else if (option == "-s") {
+            // Smoothed normals, for the polygon meshes only (below).
         } else if (option == "-r" || option == "-b") {
             const auto value = i + 1 < argc ? rt::ParseRealWord(argv[i + 1]) : std::nullopt;
-            if (!value || *value < 0) {
-                std::fprintf(stderr, "genbox: %s needs a non-negative number\n", option.c_str());
+            if (!value || !(*value > 0)) {
+                std::fprintf(stderr, "genbox: %s needs a positive number\n", option.c_str());
                 return 1;
             }
-            box.round = option == "-r";
+            box.round = box.round || option == "-r";
             box.bevel = *value;
             ++i;
+        } else if (option == "-n") {
+            const auto value = i + 1 < argc ? rt::ParseRealWord(argv[i + 1]) : std::nullopt;
+            if (!value || !(*value >= 1) || *value != std::floor(*value) || *value > 1e6) {
+                std::fprintf(stderr, "genbox: -n needs a whole number of segments, at least 1\n");
+                return 1;
+            }
+            segments = static_cast<int>(*value);
+            ++i;
+        } else if (option == "-o") {
+            std::fprintf(stderr, "genbox: -o (Wavefront .OBJ output) is not supported\n");
+            return 1;
         } else {
             return Usage(program);
         }
+    }
+    // Radiance 5.4a: with -i, a rounded box defaults to 32 segments an edge,
+    // and more than two segments are written as a polygon mesh.
+    if (box.round && (box.reverse && segments == 1 ? 32 : segments) > 2) {
+        std::fprintf(stderr,
+                     "genbox: rounded edges of more than two segments (-n above 2, or -r with "
+                     "-i) are not supported\n");
+        return 1;
     }
     for (double s : box.size) {
         if (box.bevel > 0 && 2 * box.bevel > s) {

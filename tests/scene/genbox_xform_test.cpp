@@ -5,6 +5,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +65,27 @@ TEST(Genbox, MatchesRadianceOutput) {
     for (int i = 0; i < 6; ++i) EXPECT_EQ(objects[static_cast<std::size_t>(i)].name, std::string("short_block.") + names[i]);
 }
 
+// Real Radiance 5.4a's genbox output for each form it writes without its
+// polygon-mesh library (tests/data/genbox/cases.txt: file, then command),
+// byte for byte: -i mirrors the vertices (not their order), rounded edges
+// and corners are named by their vertex letters.
+TEST(Genbox, EveryFormMatchesRadianceOutput) {
+    const std::string dir = RT_SOURCE_DIR "/tests/data/genbox/";
+    std::ifstream cases(dir + "cases.txt");
+    int checked = 0;
+    for (std::string line; std::getline(cases, line);) {
+        const std::string file = line.substr(0, line.find(' '));
+        const std::string command = line.substr(line.find(' ') + 1);
+        const RunResult run = RunShell(command);
+        ASSERT_EQ(run.status, 0) << run.output;
+        std::ifstream in(dir + file);
+        const std::string want((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(run.output, want) << command;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 6);
+}
+
 TEST(Genbox, BoxIsClosedAndFacesOutward) {
     const RunResult run = RunShell("echo 'void plastic m 0 0 5 1 1 1 0 0'; genbox m b 1 2 3");
     ASSERT_EQ(run.status, 0) << run.output;
@@ -110,6 +133,16 @@ TEST(Genbox, UsageErrors) {
     run = RunShell("genbox m b 1 1 1 -b .6");
     EXPECT_EQ(run.status, 1);
     EXPECT_NE(run.output.find("too large"), std::string::npos);
+    run = RunShell("genbox m b 1 0 1");  // Radiance: usage
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.output.find("Usage: genbox"), std::string::npos);
+    // What Radiance writes through its polygon-mesh library is refused.
+    for (const char* args : {"-r .1 -n 3", "-r .1 -i", "-o"}) {
+        run = RunShell(std::string("genbox m b 1 1 1 ") + args);
+        EXPECT_EQ(run.status, 1) << args;
+        EXPECT_NE(run.output.find("not supported"), std::string::npos) << run.output;
+        EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    }
 }
 
 TEST(Xform, HeaderCommentsAndPipeline) {
