@@ -97,6 +97,11 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
               "t.rad:1: bad number of arguments for mixtext \"t\"");
     EXPECT_EQ(BuildError("void mixtext t 4 red void f.fnt . 0 9 0 1 0 1 0 0 0 -1 0\n"),
               "t.rad:1: undefined modifier \"red\" for mixtext \"t\"");
+    // A missing text file is a system error (exit 2), as Radiance's.
+    EXPECT_EQ(testing::ErrorMessage(
+                  [] { testing::BuildText("void brighttext t 2 f.fnt nosuch.txt 0 11 0 1 0 1 0 0 0 -1 0 5 .5\n"); },
+                  Error::Kind::System),
+              "t.rad:1: brighttext \"t\": cannot find text file \"nosuch.txt\"");
     EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),

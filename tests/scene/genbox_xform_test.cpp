@@ -136,6 +136,16 @@ TEST(Genbox, UsageErrors) {
     run = RunShell("genbox m b 1 0 1");  // Radiance: usage
     EXPECT_EQ(run.status, 1);
     EXPECT_NE(run.output.find("Usage: genbox"), std::string::npos);
+    const std::pair<const char*, const char*> bad[] = {
+        {"-n 0", "genbox: -n needs a whole number of segments, at least 1\n"},
+        {"-r .1 -n 2.5", "genbox: -n needs a whole number of segments, at least 1\n"},
+        {"-b 0", "genbox: -b needs a positive number\n"},
+        {"-r", "genbox: -r needs a positive number\n"}};
+    for (const auto& [args, message] : bad) {
+        run = RunShell(std::string("genbox m b 1 1 1 ") + args);
+        EXPECT_EQ(run.status, 1) << args;
+        EXPECT_EQ(run.output, message) << args;
+    }
     // What Radiance writes through its polygon-mesh library is refused.
     for (const char* args : {"-r .1 -n 3", "-r .1 -i", "-o"}) {
         run = RunShell(std::string("genbox m b 1 1 1 ") + args);
