@@ -398,18 +398,24 @@ private:
         Define(object.name, ModifierDef{-1, static_cast<int>(scene_.patterns.size()) - 1, modifier});
     }
 
+    /// A modifier of `type` named and located as `object`, with its reals.
+    static Pattern NewPattern(const SceneObject& object, PatternType type, ModifierKind kind) {
+        Pattern pattern;
+        pattern.name = object.name;
+        pattern.type = type;
+        pattern.kind = kind;
+        pattern.owner = Describe(object);
+        pattern.args = object.rargs;
+        pattern.loc = object.loc;
+        return pattern;
+    }
+
     /// The function modifier `object` describes by the layout of `spec`: its
     /// data, transform and mixture sides, its expressions compiled.
     Pattern MakePattern(const SceneObject& object, const PatternSpec& spec) {
         const auto& words = object.sargs;
         const std::string where = object.loc.ToString();
-        Pattern pattern;
-        pattern.name = object.name;
-        pattern.type = spec.type;
-        pattern.kind = spec.kind;
-        pattern.owner = Describe(object);
-        pattern.args = object.rargs;
-        pattern.loc = object.loc;
+        Pattern pattern = NewPattern(object, spec.type, spec.kind);
         std::size_t expressions = static_cast<std::size_t>(std::max(spec.expressions, 0));
         const bool hasData = spec.dataFiles > 0 || spec.picture;
         const std::size_t names = static_cast<std::size_t>(spec.names);
@@ -520,14 +526,11 @@ private:
         const auto& words = object.sargs;
         const auto& a = object.rargs;
         if (words.size() < textAt + 1 || a.size() < reals) BadArgs(object);
-        Pattern pattern;
-        pattern.name = object.name;
-        pattern.type = mix ? PatternType::MixText : colour ? PatternType::ColorText
-                                                            : PatternType::BrightText;
-        pattern.kind = mix ? ModifierKind::Mixture : ModifierKind::Pattern;
-        pattern.owner = Describe(object);
-        pattern.args = a;
-        pattern.loc = object.loc;
+        Pattern pattern = NewPattern(object,
+                                     mix      ? PatternType::MixText
+                                     : colour ? PatternType::ColorText
+                                              : PatternType::BrightText,
+                                     mix ? ModifierKind::Mixture : ModifierKind::Pattern);
         if (mix) ResolveMixtureSides(object, pattern);
         const Vec3 right(a[3], a[4], a[5]), down(a[6], a[7], a[8]);
         if (!TextBlock::SpansPlane(right, down)) Fail(object, "illegal motion vector");

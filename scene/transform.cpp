@@ -216,9 +216,12 @@ void AppendRealArgs(std::string& text, const std::string& type, const std::vecto
     const std::size_t n = r.size();
     text += std::to_string(n);
     const char* wide = " %18.12g";
-    const bool cone = type == "cone" || type == "cup" || type == "ring";
-    const bool cylinder = type == "cylinder" || type == "tube";
-    if ((type == "polygon" && n > 0) || (cone && n == 8) || (cylinder && n == 7)) {
+    // Points and vectors three to a line: polygons' vertices; cones', cups'
+    // and rings' two points (or point and normal) and two radii; cylinders'
+    // and tubes' two points and one radius.
+    const bool eightReals = type == "cone" || type == "cup" || type == "ring";
+    const bool sevenReals = type == "cylinder" || type == "tube";
+    if ((type == "polygon" && n > 0) || (eightReals && n == 8) || (sevenReals && n == 7)) {
         text += '\n';
         for (std::size_t i = 0; i < n; i += 3) {
             AppendReals(text, r, i, 3, wide);
