@@ -83,6 +83,7 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Antimatter:  // passed, the ray's clipped modifiers changed
         case MaterialType::Bsdf:        // a proxy passes them (its thickness may vary)
         case MaterialType::ABsdf:       // its straight-through part passes them
+        case MaterialType::Mist:        // passed, the medium beyond changed
             return true;
         case MaterialType::Mirror:
             // A shadow ray meeting its front is shaded with the alternate.

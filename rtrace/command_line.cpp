@@ -253,8 +253,6 @@ int ParsePhotonRadius(RtraceOptions& o, std::span<const std::string> v, const Wa
 }
 
 constexpr std::string_view kNoPretest = "parsed; no pretest is needed (README, Differences)";
-constexpr std::string_view kMistOnly =
-    "parsed; only the in-scattering of mist's light sources reads it, and mist is not loaded";
 
 
 void CheckProcesses(RtraceOptions& o) {
@@ -420,8 +418,8 @@ constexpr OptionRow kOptionRows[] = {
     Color("-me", "mist extinction coefficient", [](RtraceOptions& o) -> Rgb& { return o.shading.medium.extinction; })
         .Listed(ExtinctionLine),
     Color("-ma", "mist scattering albedo", [](RtraceOptions& o) -> Rgb& { return o.shading.medium.albedo; }).Listed(),
-    Real("-mg", "mist scattering eccentricity", [](RtraceOptions& o) -> double& { return o.shading.medium.eccentricity; }, kMistOnly).Listed(),
-    Real("-ms", "mist sampling distance", [](RtraceOptions& o) -> double& { return o.shading.medium.samplingDistance; }, kMistOnly).Listed(),
+    Real("-mg", "mist scattering eccentricity", [](RtraceOptions& o) -> double& { return o.shading.medium.eccentricity; }).Listed(),
+    Real("-ms", "mist sampling distance", [](RtraceOptions& o) -> double& { return o.shading.medium.samplingDistance; }).Listed(),
     Int("-lr", "limit reflection", [](RtraceOptions& o) -> int& { return o.shading.limits.reflections; })
         .Listed(ReflectionLimitLine),
     Real("-lw", "limit weight", [](RtraceOptions& o) -> double& { return o.shading.limits.weight; })

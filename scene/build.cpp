@@ -92,7 +92,13 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     // Its strings are modifier names (checked in SetClipped); m_clip.c reads
     // no real arguments and ignores any.
     {"antimatter", MaterialType::Antimatter, 0, kAnyCount, kAnyCount},
+    // Its strings are light source names (resolved in shading/); m_mist.c
+    // reads up to seven reals, as many as there are.
+    {"mist", MaterialType::Mist, 0, 7, kAnyCount},
 };
+
+/// Radiance's MAXSLIST: the most light sources one mist may name.
+constexpr std::size_t kMaxMistSources = 32;
 
 /// Radiance's MAXSET: the most modifiers one antimatter may name.
 constexpr std::size_t kMaxClipped = 511;
@@ -606,6 +612,16 @@ private:
                 Fail(object, "bad number of real arguments");
             }
             if (object.sargs.size() < 4) Fail(object, "too few string arguments");
+        } else if (spec->type == MaterialType::Mist) {
+            // m_mist.c's words and kinds, at the first ray there; here when
+            // loading (README, Differences).
+            if (nreals > spec->maxReals) {
+                ThrowUserError(object.loc, "bad arguments for " + Describe(object));
+            }
+            if (object.sargs.size() > kMaxMistSources) {
+                throw Error(Error::Kind::Internal, object.loc,
+                            "too many sources in list for " + Describe(object));
+            }
         } else if (spec->function != MaterialFunction::None) {
             const std::size_t strings = spec->function == MaterialFunction::Brdf   ? 2
                                         : spec->function == MaterialFunction::Brtd ? 10
@@ -642,6 +658,8 @@ private:
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (spec->type == MaterialType::Antimatter) {
             SetClipped(object, std::get<ClipParams>(material.params));
+        } else if (spec->type == MaterialType::Mist) {
+            std::get<MistParams>(material.params).sourceNames = object.sargs;
         } else if (!object.sargs.empty() && object.sargs[0] != "void") {
             const auto alternate = Lookup(object.sargs[0]);
             if (!alternate) {

@@ -45,6 +45,7 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::Ashik2: return "ashik2";
         case MaterialType::Bsdf: return "BSDF";
         case MaterialType::ABsdf: return "aBSDF";
+        case MaterialType::Mist: return "mist";
     }
     return "unknown";
 }
@@ -69,6 +70,14 @@ const char* SurfaceTypeName(SurfaceType type) {
 MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& a) {
     // The builder fills in what antimatter clips; it has no real arguments.
     if (type == MaterialType::Antimatter) return ClipParams{};
+    if (type == MaterialType::Mist) {
+        // The builder adds the source names.
+        MistParams p;
+        if (a.size() >= 3) p.extinction = Rgb(a[0], a[1], a[2]);
+        if (a.size() >= 6) p.albedo = Rgb(a[3], a[4], a[5]);
+        if (a.size() >= 7) p.eccentricity = a[6];
+        return p;
+    }
     if (type == MaterialType::Bsdf || type == MaterialType::ABsdf) {
         // The builder sets the data and the proxy flag.
         BsdfParams p;
@@ -108,7 +117,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         case MaterialType::Ashik2:
             return AshikParams{color, Rgb(a[3], a[4], a[5]), a[6], a[7]};
         case MaterialType::Bsdf:
-        case MaterialType::ABsdf: break;  // above
+        case MaterialType::ABsdf:
+        case MaterialType::Mist: break;  // above
     }
     return NormalParams{};
 }
@@ -117,7 +127,7 @@ bool IsTransparentType(MaterialType type) {
     // transfunc and transdata are not: Radiance's -i meters them as opaque.
     return type == MaterialType::Trans || type == MaterialType::Trans2 || type == MaterialType::Glass ||
            type == MaterialType::Dielectric || type == MaterialType::Interface ||
-           type == MaterialType::ABsdf;
+           type == MaterialType::ABsdf || type == MaterialType::Mist;
 }
 
 bool IsLightType(MaterialType type) {

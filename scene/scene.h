@@ -50,9 +50,9 @@ enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
     PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter, Ashik2,
-    Bsdf, ABsdf
+    Bsdf, ABsdf, Mist
 };
-inline constexpr std::size_t kMaterialTypeCount = 25;
+inline constexpr std::size_t kMaterialTypeCount = 26;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -137,9 +137,25 @@ struct BsdfParams {
     /// (what -i and the leak test pass, whatever the thickness evaluates to).
     bool proxy = false;
 };
+/// mist (0 to 7 reals, m_mist.c): the boundary of a volume whose inside
+/// adds `extinction` (per unit length, times the mist's pattern colour) to
+/// the medium a ray travels through, may set its scattering albedo and
+/// Henyey–Greenstein eccentricity, and lists the light sources whose light
+/// it scatters into rays (radiance-notes.md §2.5, §2.8). Radiance reads as
+/// many of the reals as are given: three or more set the extinction, six or
+/// more the albedo, seven the eccentricity.
+struct MistParams {
+    Rgb extinction;             // zero with fewer than three reals
+    std::optional<Rgb> albedo;  // the scattering share of the extinction
+    std::optional<double> eccentricity;  // g of the phase function, in (-1, 1)
+    /// The source names as written: a source's surface name, or for a
+    /// source seen in a mirror `relay>source` (one relay per '>'); resolved
+    /// against the scene's light sources when shading is set up.
+    std::vector<std::string> sourceNames;
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
                                     DielectricParams, AnisoParams, BrdfParams, BrtdParams,
-                                    ClipParams, AshikParams, BsdfParams>;
+                                    ClipParams, AshikParams, BsdfParams, MistParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.

@@ -308,7 +308,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             // Shaded past the surface in between (Radiance's raycont()).
             sray.rcol = Rgb();
             tree_.Shade(ts, sray);
-            tree_.Participate(sray);
+            tree_.Participate(ts, sray);
             tree_.Report(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;

@@ -97,4 +97,10 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
                           double rayWeight, const DirectOptions& options, Rng& rng,
                           std::vector<SourceSample>& out, std::vector<SourcePartition>& scratch);
 
+/// One sample of the whole of source `source` (Radiance's nopart() then
+/// nextssamp(), as srcscatter() samples the sources mist scatters): its
+/// centre, or with -dj a point jittered over it. False when it gives none.
+bool SampleWholeSource(const std::vector<LightSource>& sources, int source, const Vec3& point,
+                       const DirectOptions& options, Rng& rng, SourceSample& sample);
+
 }  // namespace rt

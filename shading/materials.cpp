@@ -502,6 +502,76 @@ void ShadeAntimatter(const RayTree& tree, ThreadState& ts, TracedRay& ray, const
     tree.PassThrough(ts, ray, &clip);
 }
 
+/// mist (m_mist.c): the surface is passed; beyond it the medium changes.
+/// A ray meeting its front enters the volume: the extinction there is the
+/// medium's plus the mist's (times its pattern colour), the albedo and
+/// eccentricity the mist's if it gives them, and its sources join those the
+/// medium scatters from. Meeting its back, the ray leaves: the extinction
+/// drops by the mist's (not below the global -me), the albedo and
+/// eccentricity return to -ma and -mg, its sources leave the list. A ray
+/// that leaves a mist whose sources were not on its list started inside it
+/// unawares (a sensor or view point in the fog): its own length is then
+/// taken as inside, as Radiance does.
+void ShadeMist(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Material& m) {
+    const ShadingSetup& setup = tree.setup();
+    const MistParams& p = std::get<MistParams>(m.params);
+    const Rgb extinction = p.extinction * ray.pcol;
+    const auto found = setup.mistSources.find(static_cast<int>(&m - setup.scene.materials.data()));
+    static const std::vector<int> kNone;
+    const std::vector<int>& own = found != setup.mistSources.end() ? found->second : kNone;
+    const Medium& global = setup.medium;
+    const Medium before = ray.medium ? *ray.medium : Medium{Rgb(), global.albedo, global.eccentricity};
+    const auto listed = [](const Medium& md, int source) {
+        return std::find(md.scatterSources.begin(), md.scatterSources.begin() + md.scatterCount,
+                         source) != md.scatterSources.begin() + md.scatterCount;
+    };
+    // Inside: `md` with this mist's extinction, albedo, eccentricity and sources.
+    const auto enter = [&](Medium md) {
+        md.extinction += extinction;
+        if (p.albedo) md.albedo = *p.albedo;
+        if (p.eccentricity) md.eccentricity = *p.eccentricity;
+        for (const int s : own) {
+            if (listed(md, s)) continue;
+            if (md.scatterCount >= kMaxScatterSources) {
+                throw Error(Error::Kind::Internal, "scattering source list overflow");
+            }
+            md.scatterSources[static_cast<std::size_t>(md.scatterCount++)] = s;
+        }
+        return md;
+    };
+    if (ray.rod > 0.0) {
+        tree.PassThrough(ts, ray, enter(before));
+        return;
+    }
+    // Leaving: the sources the ray's list keeps, and whether it knew it was
+    // inside (Radiance takes a mist's sources missing from the list as
+    // not entered: the ray's own medium then gets the mist too).
+    Medium beyond = before;
+    int kept = 0;
+    for (int i = 0; i < before.scatterCount; ++i) {
+        const int s = before.scatterSources[static_cast<std::size_t>(i)];
+        if (std::find(own.begin(), own.end(), s) == own.end()) {
+            beyond.scatterSources[static_cast<std::size_t>(kept++)] = s;
+        }
+    }
+    beyond.scatterCount = kept;
+    const bool startedInside =
+        !own.empty() && before.scatterCount - kept < static_cast<int>(own.size());
+    const Medium inside = startedInside ? enter(before) : before;
+    for (int i = 0; i < 3; ++i) {
+        beyond.extinction[i] = std::max(inside.extinction[i] - extinction[i], global.extinction[i]);
+    }
+    if (p.albedo) beyond.albedo = global.albedo;
+    if (p.eccentricity) beyond.eccentricity = global.eccentricity;
+    tree.PassThrough(ts, ray, beyond);
+    if (startedInside) {
+        // The ray's own length lies in this mist: its participation here
+        // takes the place of the one RayTree::Trace would apply.
+        tree.ParticipateIn(ts, inside, ray);
+        ray.medium = nullptr;
+    }
+}
+
 }  // namespace
 
 std::optional<Rgb> TraceSpecularSample(const RayTree& tree, ThreadState& ts,
@@ -553,6 +623,7 @@ void ShadeByType(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
         &ShadeAshik,       // ashik2
         &ShadeBsdf,        // BSDF
         &ShadeBsdf,        // aBSDF
+        &ShadeMist,        // mist
     };
     static_assert(std::size(kShaders) == kMaterialTypeCount);
     kShaders[static_cast<std::size_t>(m.type)](tree, ts, ray, m);

@@ -122,11 +122,11 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
         ray.rot = kFhuge;
         ray.rop = ray.org;
     }
-    Participate(ray);
+    Participate(ts, ray);
     Report(ts, ray);
 }
 
-void RayTree::ParticipateIn(const Medium& medium, TracedRay& ray) const {
+void RayTree::ParticipateIn(ThreadState& ts, const Medium& medium, TracedRay& ray) const {
     if (Intens(medium.extinction) <= 1.0 / kFhuge) return;
     const bool shadow = (ray.crtype & kShadowRay) != 0;
     Rgb depth = medium.extinction * ray.rot;
@@ -134,9 +134,60 @@ void RayTree::ParticipateIn(const Medium& medium, TracedRay& ray) const {
     const Rgb kept = Attenuation(depth);
     ray.rcol *= kept;
     if (shadow || Intens(medium.albedo) <= kFtiny) return;
-    // Light scattered into the ray, from the ambient value (no light sources
-    // scatter into the global medium: Radiance lists none for it).
+    // Light scattered into the ray, from the ambient value and from the
+    // light sources the medium lists (none for the global medium).
     ray.rcol += medium.albedo * s_.ambient.value * (Rgb(1, 1, 1) - kept);
+    if (medium.scatterCount > 0) ScatterSourceLight(ts, medium, ray);
+}
+
+void RayTree::ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRay& ray) const {
+    const double g = medium.eccentricity;
+    if (g >= 1.0 - kFtiny || ray.rot >= kFhuge) return;
+    // -ms apart along the ray, at least one sample and at most 16 (MAXSSAMP).
+    constexpr int kMaxSamples = 16;
+    const double spacing = s_.shading.medium.samplingDistance;
+    int samples = 1;
+    if (spacing > kFtiny) samples = std::clamp(static_cast<int>(ray.rot / spacing + 0.5), 1, kMaxSamples);
+    for (int i = medium.scatterCount - 1; i >= 0; --i) {
+        const int source = medium.scatterSources[static_cast<std::size_t>(i)];
+        for (int j = 0; j < samples; ++j) {
+            // Stratified along the ray; the light scattered at t reaches the
+            // ray's origin through t of the medium.
+            const double t = ray.rot * (j + ts.rng.Uniform()) / samples;
+            Rgb toOrigin;  // srcscatter()'s own: no FTINY floor, unlike Attenuation
+            for (int c = 0; c < 3; ++c) {
+                const double depth = medium.extinction[c] * t;
+                toOrigin[c] = depth > 92.0 ? 0.0 : std::exp(-depth);
+            }
+            if (Intens(toOrigin) <= kFtiny) break;  // the rest is farther still
+            SourceSample sample;
+            if (!SampleWholeSource(s_.sources, source, ray.org + ray.dir * t, s_.shading.direct,
+                                   ts.rng, sample)) {
+                continue;
+            }
+            // A shadow ray of its own (no parent: full weight), through the
+            // ray's medium, followed past whatever transmits.
+            TracedRay sray;
+            sray.org = ray.org + ray.dir * t;
+            sray.dir = sample.dir;
+            sray.rtype = sray.crtype = kShadowRay;
+            sray.rsrc = source;
+            sray.medium = &medium;
+            sray.clip = ray.clip;
+            sray.depth = ray.depth + 1;
+            Trace(ts, sray);
+            if (Bright(sray.rcol) <= kFtiny) continue;
+            // Henyey–Greenstein phase function (4π-normalised), the sample's
+            // solid angle, and this sample's share of the ray's length.
+            double phase = 1.0;
+            if (g > kFtiny) {
+                const double d = 1.0 + g * g - 2.0 * g * Dot(ray.dir, sray.dir);
+                phase = (1.0 - g * g) / (d * std::sqrt(d));
+            }
+            const double factor = phase * sample.omega * ray.rot / (4.0 * kPi * samples);
+            ray.rcol += sray.rcol * medium.extinction * medium.albedo * toOrigin * factor;
+        }
+    }
 }
 
 Rgb RayTree::ShadowTransmittance(const Medium& medium, double distance) {
@@ -197,6 +248,20 @@ void RayTree::PassThrough(ThreadState& ts, TracedRay& ray,
     StartChild(ts, child, ray, kTransRay, nullptr);  // always continues, whatever the limits
     child.dir = ray.dir;
     child.clip = clip;
+    Trace(ts, child);
+    ray.mcol = child.mcol;
+    ray.rcol = child.rcol;
+    ray.rmt = ray.rot + child.rmt;
+    ray.rxt = ray.rot + child.rxt;
+}
+
+void RayTree::PassThrough(ThreadState& ts, TracedRay& ray, const Medium& beyond) const {
+    TracedRay child;
+    // Unlike raytrans(), m_mist.c stops a ray whose weight the medium
+    // brought below -lw (shadow rays are always followed).
+    if (!StartChild(ts, child, ray, kTransRay, nullptr) && !(ray.crtype & kShadowRay)) return;
+    child.dir = ray.dir;
+    child.medium = &beyond;
     Trace(ts, child);
     ray.mcol = child.mcol;
     ray.rcol = child.rcol;

@@ -51,6 +51,9 @@ public:
     /// The same, the continuing ray and its children passing the surfaces
     /// `clip` names instead of the ray's own (antimatter; TracedRay::clip).
     void PassThrough(ThreadState& ts, TracedRay& ray, const std::vector<int>* clip) const;
+    /// The same, the continuing ray and its children travelling through
+    /// `beyond` (mist: the medium on the surface's other side).
+    void PassThrough(ThreadState& ts, TracedRay& ray, const Medium& beyond) const;
     /// Applies the material's own chain, then shades with it (materials.h).
     void ShadeMaterial(ThreadState& ts, TracedRay& ray, const Material& m) const;
     /// ShadeMaterial, except that with -i the first opaque surface reached by a
@@ -63,10 +66,13 @@ public:
     }
     /// Radiance's rayparticipate(): the medium's extinction over the ray's
     /// length `rot`, then, for rays other than shadow rays, the light it
-    /// scatters in from the -av ambient value. No medium: nothing.
-    void Participate(TracedRay& ray) const {
-        if (ray.medium) ParticipateIn(*ray.medium, ray);
+    /// scatters in from the -av ambient value and from the light sources
+    /// it lists (mist). No medium: nothing.
+    void Participate(ThreadState& ts, TracedRay& ray) const {
+        if (ray.medium) ParticipateIn(ts, *ray.medium, ray);
     }
+    /// Participate() through `medium` instead of the ray's own.
+    void ParticipateIn(ThreadState& ts, const Medium& medium, TracedRay& ray) const;
     /// The share of a shadow ray's light that crosses `distance` of
     /// `medium` (scattering counts as no loss for shadow rays, as Radiance).
     static Rgb ShadowTransmittance(const Medium& medium, double distance);
@@ -78,7 +84,9 @@ public:
     const IndirectLight& indirect() const { return indirect_; }
 
 private:
-    void ParticipateIn(const Medium& medium, TracedRay& ray) const;
+    /// Radiance's srcscatter(): the light of the medium's sources scattered
+    /// into the ray over its length, sampled at points along it.
+    void ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRay& ray) const;
     /// Looks for a distant source in the ray's direction (sourcehit()).
     bool HitDistantSource(TracedRay& ray) const;
     /// -I: a measuring point lying in the plane of a wall (a sensor on an

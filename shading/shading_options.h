@@ -4,6 +4,8 @@
 // 5.4a's defaults (radiance-notes.md §1.2). Plain values; rtrace fills them.
 #pragma once
 
+#include <array>
+
 #include "core/rgb.h"
 
 namespace rt {
@@ -28,17 +30,27 @@ struct LimitOptions {
     double weight = 2e-3;       // -lw
 };
 
-/// What a ray travels through (Radiance's cext and albedo): the global
-/// medium of -me and -ma, or a dielectric's inside.
+/// Radiance's MAXSLIST: the most light sources a medium scatters from.
+inline constexpr int kMaxScatterSources = 32;
+
+/// What a ray travels through (Radiance's cext, albedo, gecc and slights):
+/// the global medium of -me, -ma and -mg, a dielectric's inside, or either
+/// changed by the mist volumes the ray's path has entered.
 struct Medium {
     Rgb extinction;  // per unit length, per channel
     Rgb albedo;      // the share of the extinction that is scattering
+    double eccentricity = 0;  // Henyey–Greenstein g of the scattering
+    /// The light sources whose light the medium scatters into rays (the
+    /// lists of the mists entered), indices into ShadingSetup::sources; the
+    /// first `scatterCount` entries count.
+    std::array<int, kMaxScatterSources> scatterSources{};
+    int scatterCount = 0;
 };
 
-/// Global participating medium (-me -ma -mg -ms): -me and -ma make every
-/// primary ray's Medium; -mg and -ms only matter for the in-scattering of
-/// mist's light sources, which lazyrad does not load (Radiance lists no
-/// sources for the global medium).
+/// Global participating medium (-me -ma -mg -ms): -me, -ma and -mg make
+/// every primary ray's Medium; -ms spaces the samples of the light mist's
+/// sources scatter into a ray (Radiance lists no sources for the global
+/// medium, so -mg and -ms matter only inside mist).
 struct MediumOptions {
     Rgb extinction;
     Rgb albedo;

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string_view>
+
+#include "scene/reader.h"
 
 namespace rt {
 namespace {
@@ -13,6 +16,45 @@ bool HasGlowSky(const Scene& scene) {
         if (s.material >= 0 && scene.materials[s.material].type == MaterialType::Glow) return true;
     }
     return false;
+}
+
+/// Radiance's srcmatch(): whether source `i` is the one `id` names, a
+/// surface name, or `relay>id` for its image in the mirror `relay`.
+bool SourceMatches(const Scene& scene, const std::vector<LightSource>& sources, int i,
+                   std::string_view id) {
+    for (auto cut = id.find('>'); cut != std::string_view::npos; cut = id.find('>')) {
+        const LightSource& s = sources[static_cast<std::size_t>(i)];
+        if (!s.IsVirtual() || scene.surfaces[static_cast<std::size_t>(s.relay)].name != id.substr(0, cut)) {
+            return false;
+        }
+        id.remove_prefix(cut + 1);
+        i = s.next;
+    }
+    const LightSource& s = sources[static_cast<std::size_t>(i)];
+    return !s.IsVirtual() && scene.surfaces[static_cast<std::size_t>(s.surface)].name == id;
+}
+
+/// m_mist.c's source list for `m`: each name's last matching source.
+std::vector<int> MistSourceList(const Scene& scene, const std::vector<LightSource>& sources,
+                                const Material& m, const WarningSink& warn) {
+    std::vector<int> list;
+    for (const std::string& name : std::get<MistParams>(m.params).sourceNames) {
+        int found = static_cast<int>(sources.size()) - 1;
+        while (found >= 0 && !SourceMatches(scene, sources, found, name)) --found;
+        const char* problem = found < 0 ? "unknown source"
+                              : std::find(list.begin(), list.end(), found) != list.end()
+                                  ? "duplicate source"
+                                  : nullptr;
+        if (problem) {
+            if (warn) {
+                warn(m.loc.ToString() + ": " + problem + " \"" + PrintableWord(name) +
+                     "\" for mist \"" + PrintableWord(m.name) + "\"");
+            }
+            continue;
+        }
+        list.push_back(found);
+    }
+    return list;
 }
 
 }  // namespace
@@ -56,8 +98,12 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
         shadowCheckCounts[n] = static_cast<int>(std::pow(double(n), shading.direct.certainty) + 0.5);
     }
 
-    medium = Medium{shading.medium.extinction, shading.medium.albedo};
+    medium = Medium{shading.medium.extinction, shading.medium.albedo, shading.medium.eccentricity};
     hasMedium = Intens(medium.extinction) > 1.0 / kFhuge;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (scene.materials[i].type != MaterialType::Mist) continue;
+        mistSources[static_cast<int>(i)] = MistSourceList(scene, sources, scene.materials[i], warn);
+    }
     queryShadows = shading.backfaceVisible;
     transmitting = core.HasTransmitting();
 }

@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -68,9 +69,13 @@ struct ShadingSetup {
     /// -ab > 0 and -aa > 0; null otherwise, and then every point samples).
     std::shared_ptr<AmbientCache> cache;
     IrradianceCache irradiance;
-    /// -me and -ma; `hasMedium` false when the extinction is zero.
+    /// -me, -ma and -mg; `hasMedium` false when the extinction is zero.
     Medium medium;
     bool hasMedium = false;
+    /// Each mist material's light sources (by Scene::materials index), as
+    /// Radiance's m_mist.c finds them: per name the last source that
+    /// matches, unknown and repeated names left out with a warning.
+    std::unordered_map<int, std::vector<int>> mistSources;
 };
 
 /// Radiance's per-source shadow-test statistics and aiming count (source.c,

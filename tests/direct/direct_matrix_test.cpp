@@ -59,6 +59,14 @@
 //   of its own, every spacing, a line of words and a file of lines, skewed
 //   frames, on lights and plastic, mixtures, an alias, an instance, load
 //   errors), answers and the files in tests/data/text/, RAYPATH that folder.
+// - mist (tests/direct/generate_mist.py: boxes and spheres of mist with 0 to
+//   7 reals, patterns, under the global -me/-ma/-av, view rays through,
+//   into and out of them, shadow rays, -I, -i, the retroactive rule for rays
+//   starting inside; the in-scattering of listed sources at several g and
+//   -ms, a sphere lamp, a spotlight, the sun, a blocker, nested mists, a
+//   mirror's virtual source "mir>bulb"; bad arguments, unknown and duplicate
+//   names, too many sources), answers and the files in tests/data/mist/,
+//   RAYPATH unset (nothing to find: the patterns are inline).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -176,6 +184,7 @@ const std::vector<MatrixRun>& Matrix() {
         for (MatrixRun& r : LoadMatrix("bsdf")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("bsdf_tree")) all.push_back(std::move(r));
         for (MatrixRun& r : LoadMatrix("text")) all.push_back(std::move(r));
+        for (MatrixRun& r : LoadMatrix("mist")) all.push_back(std::move(r));
         return all;
     }();
     return runs;
@@ -386,6 +395,7 @@ INSTANTIATE_TEST_SUITE_P(Bsdf, DirectMatrix, ::testing::ValuesIn(Groups("bsdf"))
 INSTANTIATE_TEST_SUITE_P(BsdfTree, DirectMatrix, ::testing::ValuesIn(Groups("bsdf_tree")),
                          GroupName);
 INSTANTIATE_TEST_SUITE_P(Text, DirectMatrix, ::testing::ValuesIn(Groups("text")), GroupName);
+INSTANTIATE_TEST_SUITE_P(Mist, DirectMatrix, ::testing::ValuesIn(Groups("mist")), GroupName);
 
 // rtrace (this process's rt::Run) with `options` on `scene`, written to a
 // temporary file, and `rays` on standard input, RAYPATH unset (lazyrad's own
@@ -485,6 +495,7 @@ TEST(DirectMatrixData, CoversTheMatrix) {
     EXPECT_GE(Groups("bsdf").size(), 8u);
     EXPECT_GE(Groups("bsdf_tree").size(), 6u);
     EXPECT_GE(Groups("text").size(), 5u);
+    EXPECT_GE(Groups("mist").size(), 6u);
 }
 
 }  // namespace

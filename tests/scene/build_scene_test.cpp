@@ -102,7 +102,17 @@ TEST(BuildScene, UnsupportedTypesAreRejected) {
                   [] { testing::BuildText("void brighttext t 2 f.fnt nosuch.txt 0 11 0 1 0 1 0 0 0 -1 0 5 .5\n"); },
                   Error::Kind::System),
               "t.rad:1: brighttext \"t\": cannot find text file \"nosuch.txt\"");
-    EXPECT_EQ(BuildError("void mist m 0 0 0\n"), "t.rad:1: unsupported material type 'mist'");
+    EXPECT_EQ(BuildError("void prism1 p 5 1 0 0 0 . 0 0\n"),
+              "t.rad:1: unsupported material type 'prism1'");
+    // mist: Radiance's words (and, for too many sources, its internal
+    // error, exit 3), when the scene loads rather than at the first ray.
+    EXPECT_EQ(BuildError("void mist m 0 0 8 1 1 1 .5 .5 .5 0 0\n"),
+              "t.rad:1: bad arguments for mist \"m\"");
+    std::string names;
+    for (int i = 0; i < 33; ++i) names += " s" + std::to_string(i);
+    EXPECT_EQ(testing::ErrorMessage([&] { testing::BuildText("void mist m 33" + names + " 0 3 1 1 1\n"); },
+                                    Error::Kind::Internal),
+              "t.rad:1: too many sources in list for mist \"m\"");
     // A material in a material's own modifier chain (Radiance: fatal).
     EXPECT_EQ(BuildError("void plastic a 0 0 5 1 1 1 0 0\na plastic b 0 0 5 1 1 1 0 0\n"),
               "t.rad:2: conflicting material \"a\" in the modifiers of plastic \"b\"");
