@@ -65,8 +65,9 @@
 //   starting inside; the in-scattering of listed sources at several g and
 //   -ms, a sphere lamp, a spotlight, the sun, a blocker, nested mists, a
 //   mirror's virtual source "mir>bulb"; bad arguments, unknown and duplicate
-//   names, too many sources), answers and the files in tests/data/mist/,
-//   RAYPATH unset (nothing to find: the patterns are inline).
+//   names, too many sources; -ab 1 through the fog, the fog as an octree
+//   instance), answers and the files in tests/data/mist/, RAYPATH that
+//   folder (the instance's octree).
 //
 // Bounds (issue "Direct light from every kind of source"):
 // - deterministic settings (-u- -dj 0 -dt 0, -ds 0.2 or -ds 0): every number
@@ -261,13 +262,19 @@ struct Outcome {
 Outcome RunLazyrad(const MatrixRun& r) {
     std::vector<std::string> args = {"rtrace", "-h"};
     args.insert(args.end(), r.options.begin(), r.options.end());
+    // A "noise" run compares means over repeats of each ray. lazyrad's -u-
+    // gives repeated rays the same random numbers, Radiance's only its
+    // correlated tables (srcscatter() draws from random() either way), so
+    // lazyrad takes -u+ there; Radiance may keep -u- (its virtual sources'
+    // pretest is random under -u+).
+    if (r.check == "noise") std::replace(args.begin(), args.end(), std::string("-u-"), std::string("-u+"));
     for (const auto& f : r.files) args.push_back(DataDir(r.dataset) + f);
     std::ifstream raysFile(DataDir(r.dataset) + r.rays);
     // lazyrad's own function files, whatever the environment says; the data
     // files' cases find their .dat, .cal and pictures in their own folder.
     if (r.dataset == "datafiles" || r.dataset == "aniso" || r.dataset == "brdf" ||
         r.dataset == "clip" || r.dataset == "ashik" || r.dataset == "bsdf" ||
-        r.dataset == "bsdf_tree" || r.dataset == "text") {
+        r.dataset == "bsdf_tree" || r.dataset == "text" || r.dataset == "mist") {
         setenv("RAYPATH", DataDir(r.dataset).c_str(), 1);
     } else {
         unsetenv("RAYPATH");

@@ -24,7 +24,10 @@
 # overflowing 32 sources over two nested mists. (Radiance checks a mist
 # at the first ray that hits it, lazyrad when the scene loads: a fault in
 # a mist no ray hits is an error in lazyrad alone, README Differences; not
-# here.) Noise cases run with -u+ instead of -u- (see main()).
+# here.) Noise cases keep -u-, under which Radiance's srcscatter() still
+# draws from random() and its virtual sources' pretest is deterministic
+# (under -u+ it dropped the image "mir>bulb" in most runs); the test runs
+# lazyrad with -u+ for them.
 #
 # What Radiance 5.4a does here, seen in its answers: a ray starting inside a
 # mist without sources never gets its extinction (leaving takes it off, not
@@ -36,8 +39,9 @@
 # falls below -lw is dropped (0). The 33 names and the overflow are
 # internal errors, exit status 3.
 import os
+import subprocess
 
-from generate_patterns import radiance
+from generate_patterns import BIN, ENV, radiance
 from matrix_data import fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -299,7 +303,27 @@ def main():
     runs.append(("mistmirror", "bad_relay", ["mirror.rad", "mirror_bad_relay.rad"],
                  "mirror.rays", 1, DET, "exact"))
 
-    # 5. Messages.
+    # 5. Mist crossed with other features (noise): hemisphere rays of -ab 1
+    # through the fog (each scattering the bulb's light and dimmed by it),
+    # at view rays and -I sensors; the fog box as an octree instance,
+    # moved, turned and scaled (extinction stays per unit of world length,
+    # its source named in the scene), lit by the spotlight.
+    write("cross_fog.rad", mist("fog", ["bulb"], [.3, .3, .3, .7, .7, .7, .3]) +
+          box("fog", "box", *ROOM_BOX))
+    for rays in ("room.rays", "room.pts"):
+        runs.append(("mistcross", f"ab1_{rays.split('.')[1]}", ["room.rad", "cross_fog.rad"],
+                     rays, REPEAT // 8, "-u+ -dj 0 -dt 0 -ab 1 -aa 0 -ad 64 -as 0" +
+                     (" -I" if rays == "room.pts" else ""), "noise"))
+    write("inst_fog.rad", mist("fog", ["spotbulb"], [.2, .2, .2, .8, .8, .8]) +
+          box("fog", "box", -1, 1, -1, 1, -.5, 1.5))
+    with open(os.path.join(OUT, "inst_fog.oct"), "wb") as f:
+        subprocess.run([os.path.join(BIN, "oconv"), "-f", "inst_fog.rad"], stdout=f,
+                       check=True, env=ENV, cwd=OUT)
+    write("cross_instance.rad", "void instance fogi 9 inst_fog.oct -rz 30 -s 1.5 -t .1 0 0 0 0\n")
+    runs.append(("mistcross", "instance", ["spot.rad", "cross_instance.rad"], "beam.rays",
+                 REPEAT, DET, "noise"))
+
+    # 6. Messages.
     lamps = "".join(f"lamp sphere l{i} 0 0 4 {i % 6 - 2.5} {i // 6 - 2.5} 4 .05\n"
                     for i in range(34))
     write("lamps.rad", "void light lamp 0 0 3 50 50 50\n" + lamps +
@@ -328,11 +352,6 @@ def main():
         runs.append(("misterror", name, [scene, f"error_{name}.rad"], rays, 1, DET, "exact"))
     write("lamps.rays", "-4 0 1 1 0 0\n0 0.5 2.8 0 0 -1\n0.2 0.1 1.5 0 0 -1\n")
 
-    # Noise cases run with -u+: lazyrad's -u- gives identical rays the same
-    # random numbers, so its repeats would be one sample (Radiance's
-    # srcscatter() draws from random() either way).
-    runs = [(g, n, f, r, rep, o.replace("-u- ", "-u+ ") if c == "noise" else o, c)
-            for g, n, f, r, rep, o, c in runs]
     run_and_write(runs, radiance, OUT,
                   "# Real Radiance 5.4a's answers for the mist cases of\n"
                   "# tests/direct/direct_matrix_test.cpp, written by\n"
