@@ -44,6 +44,7 @@
 
 #include "core/check.h"
 #include "core/conventions.h"
+#include "core/huge_pages.h"
 #include "raycore/hull.h"
 #include "raycore/shapes.h"
 #include "raycore/source_plane.h"
@@ -1021,6 +1022,12 @@ void RayCore::Impl::MakePolygonQuads(Geometry& geometry) {
     geometry.polygonVertices.reserve(3 * vertexCount + 1);
     geometry.polygonQuads.reserve(quadBound);
     geometry.polygonPlanes.reserve(quadBound);
+    AdviseHugePages(geometry.polygonVertices.data(),
+                    geometry.polygonVertices.capacity() * sizeof(geometry.polygonVertices[0]));
+    AdviseHugePages(geometry.polygonQuads.data(),
+                    geometry.polygonQuads.capacity() * sizeof(geometry.polygonQuads[0]));
+    AdviseHugePages(geometry.polygonPlanes.data(),
+                    geometry.polygonPlanes.capacity() * sizeof(geometry.polygonPlanes[0]));
     geometry.quadStart.reserve(surfaces.size() + 1);
     for (size_t i = 0; i < surfaces.size(); ++i) {
         geometry.quadStart.push_back(static_cast<unsigned>(geometry.polygonQuads.size()));
@@ -1066,18 +1073,26 @@ void RayCore::Impl::BuildPolygons(Layer& layer, Geometry& geometry,
     const std::size_t vertexCount = (geometry.polygonVertices.size() - 1) / 3;
     rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                geometry.polygonVertices.data(), 0, 3 * sizeof(float), vertexCount);
-    auto* ib = static_cast<std::array<unsigned, 4>*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), count));
-    if (!ib) {
-        rtcReleaseGeometry(geom);
-        Check("rtcSetNewGeometryBuffer");
-        throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
-    }
-    for (size_t i = 0; i + 1 < start.size(); ++i) {
-        if (leftOut[i]) continue;
-        for (unsigned q = start[i]; q < start[i + 1]; ++q) {
-            *ib++ = geometry.polygonQuads[q];
-            if (!all) layer.quads.push_back(geometry.polygonPlanes[q]);
+    if (all) {
+        // Every quad: Embree reads the geometry's own index array, which
+        // outlives the layer, rather than a copy in fresh pages (a large
+        // model's start-up is mostly first touches of memory).
+        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                   geometry.polygonQuads.data(), 0, 4 * sizeof(unsigned), count);
+    } else {
+        auto* ib = static_cast<std::array<unsigned, 4>*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), count));
+        if (!ib) {
+            rtcReleaseGeometry(geom);
+            Check("rtcSetNewGeometryBuffer");
+            throw Error(Error::Kind::System, "Embree rtcSetNewGeometryBuffer failed");
+        }
+        for (size_t i = 0; i + 1 < start.size(); ++i) {
+            if (leftOut[i]) continue;
+            for (unsigned q = start[i]; q < start[i + 1]; ++q) {
+                *ib++ = geometry.polygonQuads[q];
+                layer.quads.push_back(geometry.polygonPlanes[q]);
+            }
         }
     }
     rtcSetGeometryUserData(geom, all ? &geometry.polygonPlanes : &layer.quads);

@@ -15,6 +15,7 @@
 
 #include "cal/ray_variables.h"
 #include "core/conventions.h"
+#include "core/huge_pages.h"
 #include "scene/loader.h"
 #include "scene/object_types.h"
 #include "scene/mesh_file.h"
@@ -220,7 +221,11 @@ public:
         : warn_(warn), options_(options) {}
 
     /// Room for `n` more surfaces: most objects of a large scene are.
-    void ReserveSurfaces(std::size_t n) { surfaces_->reserve(surfaces_->size() + n); }
+    void ReserveSurfaces(std::size_t n) {
+        const bool fresh = surfaces_->capacity() == 0;
+        surfaces_->reserve(surfaces_->size() + n);
+        if (fresh) AdviseHugePages(surfaces_->data(), surfaces_->capacity() * sizeof(Surface));
+    }
 
     /// A surface takes the object's strings; other objects are left as they were.
     void Add(SceneObject& object) {

@@ -101,9 +101,13 @@ OctreeFile ReadOctree(std::istream& in, const std::string& name, bool firstLineR
     OctreeFile oct = ReadUpToObjects(r, firstLineRead, size);
     onCount(oct.objectCount);
     if (!oct.frozen()) return oct;
+    // Sized once from the count, and the names taken from the reader's own
+    // list: growing and copying them cost a large model's start-up page
+    // faults (docs/measured-choices.md).
     OctreeObjectTally tally;
-    detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
-        tally.Add(o);
+    tally.surface.reserve(static_cast<std::size_t>(std::min(oct.objectCount, detail::kMaxReservedObjects)));
+    tally.names = detail::ReadObjectSection(r, size, oct.objectCount, [&](SceneObject& o) {
+        tally.surface.push_back(IsSurfaceObjectType(o.type));
         onObject(o);
     });
     CheckObjectCount(r, oct, tally.names.size());

@@ -182,6 +182,7 @@ std::vector<std::string> ReadObjectSection(RadianceBinaryReader& r, int objsize,
     }
     // Modifiers are named by index among the objects before them.
     std::vector<std::string> names;
+    if (maxObjects > 0) names.reserve(static_cast<std::size_t>(std::min(maxObjects, kMaxReservedObjects)));
     for (;;) {
         const long long at = r.offset();
         const int type = r.Byte("object type");
