@@ -1066,7 +1066,10 @@ void RayCore::Impl::BuildPolygons(Layer& layer, Geometry& geometry,
     // A layer with every polygon uses the geometry's planes; one that
     // leaves some out numbers its quads afresh and keeps its own.
     const bool all = count == geometry.polygonQuads.size();
-    if (!all) layer.quads.reserve(count);
+    if (!all) {
+        layer.quads.reserve(count);
+        AdviseHugePages(layer.quads.data(), layer.quads.capacity() * sizeof(layer.quads[0]));
+    }
 
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
     Check("rtcNewGeometry");
