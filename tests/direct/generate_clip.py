@@ -19,28 +19,12 @@ import os
 import subprocess
 
 from generate_patterns import BIN, ENV, radiance
-from matrix_data import fresh_folder, run_and_write
+from matrix_data import box, fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 OUT = os.path.join(ROOT, "tests", "data", "clip")
 DET = "-u- -dj 0 -dt 0"
-
-
-def box(mod, name, lo, hi):
-    """A closed box of six polygons, normals outward (genbox's order)."""
-    (x0, y0, z0), (x1, y1, z1) = lo, hi
-    faces = {
-        "xlo": [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
-        "xhi": [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
-        "ylo": [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
-        "yhi": [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
-        "zlo": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
-        "zhi": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
-    }
-    return "".join(f"{mod} polygon {name}.{k} 0 0 12 " +
-                   "  ".join(" ".join(f"{c:g}" for c in v) for v in vs) + "\n"
-                   for k, vs in faces.items())
 
 
 def wall(mod, name, x, facing=1, y=(-5, 5), z=(-1, 5)):

@@ -42,6 +42,7 @@ import os
 import subprocess
 
 from generate_patterns import BIN, ENV, radiance
+import matrix_data
 from matrix_data import fresh_folder, run_and_write
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -55,28 +56,8 @@ LAZY_REPEAT = 512
 
 
 def box(mod, name, x0, x1, y0, y1, z0, z1):
-    """Six polygons of `mod` around [x0, x1] x [y0, y1] x [z0, z1], their
-    normals (right-handed vertex order) facing out."""
-    faces = {
-        "xlo": [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
-        "xhi": [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
-        "ylo": [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
-        "yhi": [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
-        "zlo": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
-        "zhi": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
-    }
-    centre = ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2)
-    text = ""
-    for f, v in faces.items():
-        e1 = [v[1][k] - v[0][k] for k in range(3)]
-        e2 = [v[2][k] - v[0][k] for k in range(3)]
-        n = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-             e1[0] * e2[1] - e1[1] * e2[0])
-        mid = [sum(p[k] for p in v) / 4 - centre[k] for k in range(3)]
-        assert sum(n[k] * mid[k] for k in range(3)) > 0, f
-        text += (f"{mod} polygon {name}.{f} 0 0 12 " +
-                 "  ".join(" ".join("%g" % c for c in p) for p in v) + "\n")
-    return text
+    """matrix_data.box around [x0, x1] x [y0, y1] x [z0, z1]."""
+    return matrix_data.box(mod, name, (x0, y0, z0), (x1, y1, z1))
 
 
 def mist(name, sources, reals, mod="void"):

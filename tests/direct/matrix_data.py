@@ -82,3 +82,28 @@ LIT_BOX = ("void plastic wall 0 0 5 .5 .5 .5 0 0\n" + "".join(
         ("west", "-2 -2 -1  -2 2 -1  -2 2 2  -2 -2 2"),
         ("east", "2 -2 -1  2 -2 2  2 2 2  2 2 -1"))) +
     "void light l 0 0 3 20 20 20\nl sphere bulb 0 0 4 0 0 1.5 .2\n")
+
+
+def box(mod, name, lo, hi):
+    """A closed box of six polygons of `mod` from corner `lo` to corner `hi`,
+    normals outward (genbox's order; checked)."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    faces = {
+        "xlo": [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
+        "xhi": [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
+        "ylo": [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
+        "yhi": [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
+        "zlo": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
+        "zhi": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
+    }
+    centre = ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2)
+    for f, v in faces.items():
+        e1 = [v[1][k] - v[0][k] for k in range(3)]
+        e2 = [v[2][k] - v[0][k] for k in range(3)]
+        n = (e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+             e1[0] * e2[1] - e1[1] * e2[0])
+        mid = [sum(p[k] for p in v) / 4 - centre[k] for k in range(3)]
+        assert sum(n[k] * mid[k] for k in range(3)) > 0, f
+    return "".join(f"{mod} polygon {name}.{k} 0 0 12 " +
+                   "  ".join(" ".join(f"{c:g}" for c in v) for v in vs) + "\n"
+                   for k, vs in faces.items())
