@@ -165,15 +165,15 @@ void RayTree::ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRa
                                    ts.rng, sample)) {
                 continue;
             }
-            // A shadow ray of its own (no parent: full weight), through the
-            // ray's medium, followed past whatever transmits.
+            // A shadow ray of its own, as srcscatter() makes it: no parent
+            // (full weight, no antimatter passed), the ray's medium, followed
+            // past whatever transmits.
             TracedRay sray;
             sray.org = ray.org + ray.dir * t;
             sray.dir = sample.dir;
             sray.rtype = sray.crtype = kShadowRay;
             sray.rsrc = source;
             sray.medium = &medium;
-            sray.clip = ray.clip;
             sray.depth = ray.depth + 1;
             Trace(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) continue;
