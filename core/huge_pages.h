@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace rt {
 
@@ -15,5 +16,12 @@ namespace rt {
 /// Arrays of less than 2 MiB, systems without THP, and failures are left
 /// as they are: it is only advice, and changes no value.
 void AdviseHugePages(const void* data, std::size_t bytes);
+
+/// The same for a vector's whole allocation (its capacity), right after it
+/// is reserved.
+template <class T>
+void AdviseHugePages(const std::vector<T>& v) {
+    AdviseHugePages(v.data(), v.capacity() * sizeof(T));
+}
 
 }  // namespace rt

@@ -1022,12 +1022,9 @@ void RayCore::Impl::MakePolygonQuads(Geometry& geometry) {
     geometry.polygonVertices.reserve(3 * vertexCount + 1);
     geometry.polygonQuads.reserve(quadBound);
     geometry.polygonPlanes.reserve(quadBound);
-    AdviseHugePages(geometry.polygonVertices.data(),
-                    geometry.polygonVertices.capacity() * sizeof(geometry.polygonVertices[0]));
-    AdviseHugePages(geometry.polygonQuads.data(),
-                    geometry.polygonQuads.capacity() * sizeof(geometry.polygonQuads[0]));
-    AdviseHugePages(geometry.polygonPlanes.data(),
-                    geometry.polygonPlanes.capacity() * sizeof(geometry.polygonPlanes[0]));
+    AdviseHugePages(geometry.polygonVertices);
+    AdviseHugePages(geometry.polygonQuads);
+    AdviseHugePages(geometry.polygonPlanes);
     geometry.quadStart.reserve(surfaces.size() + 1);
     for (size_t i = 0; i < surfaces.size(); ++i) {
         geometry.quadStart.push_back(static_cast<unsigned>(geometry.polygonQuads.size()));
@@ -1068,7 +1065,7 @@ void RayCore::Impl::BuildPolygons(Layer& layer, Geometry& geometry,
     const bool all = count == geometry.polygonQuads.size();
     if (!all) {
         layer.quads.reserve(count);
-        AdviseHugePages(layer.quads.data(), layer.quads.capacity() * sizeof(layer.quads[0]));
+        AdviseHugePages(layer.quads);
     }
 
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);

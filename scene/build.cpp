@@ -224,7 +224,7 @@ public:
     void ReserveSurfaces(std::size_t n) {
         const bool fresh = surfaces_->capacity() == 0;
         surfaces_->reserve(surfaces_->size() + n);
-        if (fresh) AdviseHugePages(surfaces_->data(), surfaces_->capacity() * sizeof(Surface));
+        if (fresh) AdviseHugePages(*surfaces_);
     }
 
     /// A surface takes the object's strings; other objects are left as they were.

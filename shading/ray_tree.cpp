@@ -246,13 +246,8 @@ void RayTree::PassThrough(ThreadState& ts, TracedRay& ray,
                           const std::vector<int>* clip) const {
     TracedRay child;
     StartChild(ts, child, ray, kTransRay, nullptr);  // always continues, whatever the limits
-    child.dir = ray.dir;
     child.clip = clip;
-    Trace(ts, child);
-    ray.mcol = child.mcol;
-    ray.rcol = child.rcol;
-    ray.rmt = ray.rot + child.rmt;
-    ray.rxt = ray.rot + child.rxt;
+    Continue(ts, ray, child);
 }
 
 void RayTree::PassThrough(ThreadState& ts, TracedRay& ray, const Medium& beyond) const {
@@ -260,8 +255,12 @@ void RayTree::PassThrough(ThreadState& ts, TracedRay& ray, const Medium& beyond)
     // Unlike raytrans(), m_mist.c stops a ray whose weight the medium
     // brought below -lw (shadow rays are always followed).
     if (!StartChild(ts, child, ray, kTransRay, nullptr) && !(ray.crtype & kShadowRay)) return;
-    child.dir = ray.dir;
     child.medium = &beyond;
+    Continue(ts, ray, child);
+}
+
+void RayTree::Continue(ThreadState& ts, TracedRay& ray, TracedRay& child) const {
+    child.dir = ray.dir;
     Trace(ts, child);
     ray.mcol = child.mcol;
     ray.rcol = child.rcol;

@@ -84,6 +84,9 @@ public:
     const IndirectLight& indirect() const { return indirect_; }
 
 private:
+    /// The rest of PassThrough: `child`, started from `ray`, goes on in the
+    /// same direction, and its results become the ray's.
+    void Continue(ThreadState& ts, TracedRay& ray, TracedRay& child) const;
     /// Radiance's srcscatter(): the light of the medium's sources scattered
     /// into the ray over its length, sampled at points along it.
     void ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRay& ray) const;
