@@ -17,6 +17,21 @@ namespace rt {
 /// as they are: it is only advice, and changes no value.
 void AdviseHugePages(const void* data, std::size_t bytes);
 
+/// Makes the heap's next `bytes` of allocations come from memory advised into
+/// transparent huge pages, for a scene whose many small blocks (a polygon's
+/// vertices, names, the readers' lists) would otherwise fault in one 4 KiB
+/// page at a time. What glibc's tunable glibc.malloc.hugetlb=1 does, which a
+/// program cannot set for itself: malloc is told to keep what is freed
+/// (M_TRIM_THRESHOLD), to serve blocks up to 32 MiB from the heap
+/// (M_MMAP_THRESHOLD, so the scene's larger lists land there too), and to
+/// grow the heap by `bytes` at once (M_TOP_PAD, for one growth that this
+/// forces), and the new part is advised. Only address space is taken: pages
+/// are backed as they are first written. Returns whether the heap grew and
+/// was advised: false below 4 MiB, outside glibc's malloc (a sanitizer's
+/// allocator), or when the heap cannot grow (malloc then maps memory as
+/// usual). Changes no value the program computes.
+bool ReserveHeapInHugePages(std::size_t bytes);
+
 /// The same for a vector's whole allocation (its capacity), right after it
 /// is reserved.
 template <class T>

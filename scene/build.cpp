@@ -215,6 +215,9 @@ struct Placement {
 /// more instances than memory holds.
 constexpr std::size_t kMaxInstances = 10'000'000;
 
+/// Heap reserved in huge pages per object a scene announces (ReserveSurfaces).
+constexpr std::size_t kHeapPerObject = 1024;
+
 class SceneBuilder {
 public:
     SceneBuilder(const WarningSink& warn, const SceneLoadOptions& options)
@@ -224,7 +227,14 @@ public:
     void ReserveSurfaces(std::size_t n) {
         const bool fresh = surfaces_->capacity() == 0;
         surfaces_->reserve(surfaces_->size() + n);
-        if (fresh) AdviseHugePages(*surfaces_);
+        if (fresh) {
+            AdviseHugePages(*surfaces_);
+            // A large scene's other blocks in huge pages too: about 1 KiB of
+            // heap per object was measured to cover the office of
+            // bench/big_scene.sh, lists and Embree's input included
+            // (docs/measured-choices.md).
+            ReserveHeapInHugePages(n * kHeapPerObject);
+        }
     }
 
     /// A surface takes the object's strings; other objects are left as they were.

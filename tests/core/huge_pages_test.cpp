@@ -9,7 +9,9 @@
 #include <sys/mman.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <vector>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -72,6 +74,27 @@ TEST(HugePages, SmallNullAndUnalignedRangesAreHarmless) {
     char small[100] = {};
     AdviseHugePages(small, sizeof small);
     EXPECT_EQ(VmFlagsOf(small).find(" hg"), std::string::npos);
+}
+
+TEST(HugePages, ReservedHeapIsAdvised) {
+#if defined(__SANITIZE_ADDRESS__) || !defined(__GLIBC__)
+    GTEST_SKIP() << "not glibc's malloc";
+#else
+    if (ThpMode() != "madvise" && ThpMode() != "always") GTEST_SKIP() << "no transparent huge pages";
+    EXPECT_FALSE(ReserveHeapInHugePages(std::size_t{1} << 20));  // too small to bother
+    ASSERT_TRUE(ReserveHeapInHugePages(std::size_t{64} << 20));
+    // Small blocks, more than the heap held free before: the last ones come
+    // from the part just grown, which is advised. Their memory is ordinary.
+    std::vector<char*> blocks;
+    for (int i = 0; i < 4096; ++i) {
+        blocks.push_back(static_cast<char*>(std::malloc(4000)));
+        ASSERT_NE(blocks.back(), nullptr);
+        std::memset(blocks.back(), i & 0xff, 4000);
+    }
+    EXPECT_NE(VmFlagsOf(blocks.back()).find(" hg"), std::string::npos);
+    EXPECT_EQ(blocks[100][3999], 100);
+    for (char* b : blocks) std::free(b);
+#endif
 }
 
 }  // namespace
