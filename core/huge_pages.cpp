@@ -35,7 +35,7 @@ bool ReserveHeapInHugePages(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(__GLIBC__) && \
     !defined(__SANITIZE_ADDRESS__)
     if (bytes < (std::size_t{4} << 20)) return false;
-    // mallopt takes an int; 1 GiB is address space enough for any scene.
+    // mallopt takes an int: at most 1 GiB is reserved (more is grown as usual).
     const int pad = static_cast<int>(std::min(bytes, std::size_t{1} << 30));
     // One block larger than all the heap's free memory must extend it: by
     // itself plus the pad. It stays below the raised mmap threshold unless
