@@ -21,11 +21,8 @@ void RadianceBinaryReader::Fail(long long at, const std::string& what) const {
     ThrowUserError(FileLoc{name_, 0, at}, what);
 }
 
-int RadianceBinaryReader::Byte(const char* what) {
-    const int c = buf_->sbumpc();
-    if (c == std::char_traits<char>::eof()) Fail(truncated_ + " (reading " + std::string(what) + ")");
-    ++offset_;
-    return c;
+void RadianceBinaryReader::FailTruncated(const char* what) const {
+    Fail(truncated_ + " (reading " + std::string(what) + ")");
 }
 
 long long RadianceBinaryReader::Int(int nbytes, const char* what) {
