@@ -47,11 +47,16 @@ inline double MaxAbs(const Vec3& v) {
 inline bool IsFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+/// std::fmin and std::fmax per component (a NaN loses to a number), written
+/// out: GCC calls libm for them, and a large scene's bounds take a call per
+/// vertex coordinate (docs/measured-choices.md).
+inline double FMin(double a, double b) { return b < a || a != a ? b : a; }
+inline double FMax(double a, double b) { return b > a || a != a ? b : a; }
 inline Vec3 Min(const Vec3& a, const Vec3& b) {
-    return {std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)};
+    return {FMin(a.x, b.x), FMin(a.y, b.y), FMin(a.z, b.z)};
 }
 inline Vec3 Max(const Vec3& a, const Vec3& b) {
-    return {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)};
+    return {FMax(a.x, b.x), FMax(a.y, b.y), FMax(a.z, b.z)};
 }
 
 inline std::ostream& operator<<(std::ostream& os, const Vec3& v) {

@@ -39,6 +39,33 @@ TEST(Vecmath, SinCosMatchTheLibrary) {
     EXPECT_LT(worstTurn, 5e-16);
 }
 
+// Min and Max are std::fmin and std::fmax per component, NaN included: a
+// NaN coordinate never takes over a bounding box.
+TEST(Vecmath, MinMaxAreFminFmax) {
+    const double nan = std::nan("");
+    const double values[] = {-2.5, -0.0, 0.0, 1.0, 3e300, -INFINITY, INFINITY, nan};
+    for (double a : values) {
+        for (double b : values) {
+            const Vec3 lo = Min(Vec3(a, b, a), Vec3(b, a, a));
+            const Vec3 hi = Max(Vec3(a, b, a), Vec3(b, a, a));
+            const double wantLo = std::fmin(a, b), wantHi = std::fmax(a, b);
+            for (double got : {lo.x, lo.y}) {
+                if (std::isnan(wantLo)) EXPECT_TRUE(std::isnan(got));
+                else EXPECT_EQ(got, wantLo) << a << " " << b;
+            }
+            for (double got : {hi.x, hi.y}) {
+                if (std::isnan(wantHi)) EXPECT_TRUE(std::isnan(got));
+                else EXPECT_EQ(got, wantHi) << a << " " << b;
+            }
+        }
+    }
+    Bounds3 box;
+    box.Extend(Vec3(1, 2, 3));
+    box.Extend(Vec3(nan, -1, 4));
+    EXPECT_EQ(box.lo, Vec3(1, -1, 3));
+    EXPECT_EQ(box.hi, Vec3(1, 2, 4));
+}
+
 TEST(Rgb, BrightUsesRadianceWeights) {
     EXPECT_NEAR(Bright(Rgb(1, 1, 1)), 1.0, 1e-8);
     EXPECT_DOUBLE_EQ(Bright(Rgb(0, 1, 0)), 0.670114631);
