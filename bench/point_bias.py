@@ -17,14 +17,7 @@ import argparse
 import math
 import sys
 
-
-def luminance(rgb):
-    return 0.265 * rgb[0] + 0.670 * rgb[1] + 0.065 * rgb[2]
-
-
-def read_rows(path):
-    with open(path) as f:
-        return [[float(x) for x in line.split()] for line in f if line.strip()]
+from values import luminance, read_rows
 
 
 def main():
@@ -36,13 +29,16 @@ def main():
     args = ap.parse_args()
     ref = [luminance(r[:3]) for r in read_rows(args.reference)]
     points = read_rows(args.points)
-    n = len(ref)
+    # Points the reference gives no light are left out, as bench/score.py does.
+    lit = [i for i, r in enumerate(ref) if r > 1e-9]
     runs = []
     for path in args.outputs:
         out = [luminance(r[:3]) for r in read_rows(path)]
-        if len(out) != n:
-            sys.exit(f"point_bias.py: {path}: {len(out)} values, the reference has {n}")
-        runs.append([out[i] / ref[i] - 1 for i in range(n)])
+        if len(out) != len(ref):
+            sys.exit(f"point_bias.py: {path}: {len(out)} values, the reference has {len(ref)}")
+        runs.append([out[i] / ref[i] - 1 for i in lit])
+    points = [points[i] for i in lit]
+    n = len(lit)
     k = len(runs)
     bias = [sum(r[i] for r in runs) / k for i in range(n)]
     spread = [math.sqrt(sum((r[i] - bias[i]) ** 2 for r in runs) / max(1, k - 1)) for i in range(n)]
@@ -52,7 +48,7 @@ def main():
           f"RMS of point spreads {100 * math.sqrt(sum(s * s for s in spread) / n):.3f} %")
     for i in sorted(range(n), key=lambda i: -abs(bias[i]))[: args.top]:
         where = " ".join(f"{x:g}" for x in points[i][:3])
-        print(f"  point {i} ({where}): bias {100 * bias[i]:+.2f} % "
+        print(f"  point {lit[i]} ({where}): bias {100 * bias[i]:+.2f} % "
               f"± {100 * spread[i] / math.sqrt(k):.2f}, spread {100 * spread[i]:.2f} %")
 
 

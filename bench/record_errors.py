@@ -23,17 +23,11 @@ import os
 import subprocess
 import sys
 
-
-def luminance(rgb):
-    return 0.265 * rgb[0] + 0.670 * rgb[1] + 0.065 * rgb[2]
+from values import luminance, rows
 
 
 def run(cmd, text_in=None):
     return subprocess.run(cmd, input=text_in, capture_output=True, text=True, check=True).stdout
-
-
-def rows(text):
-    return [[float(x) for x in line.split()] for line in text.splitlines() if line.strip()]
 
 
 def main():

@@ -215,8 +215,14 @@ struct Placement {
 /// more instances than memory holds.
 constexpr std::size_t kMaxInstances = 10'000'000;
 
-/// Heap reserved in huge pages per object a scene announces (ReserveSurfaces).
+/// Heap reserved in huge pages for a large scene (ReserveHeapInHugePages):
+/// per object a scene announces (an octree's count), and per byte of scene
+/// text where the count is unknown (an exported model's object takes some
+/// 150 bytes of text). About 1 KiB of heap per object was measured to cover
+/// the office of bench/big_scene.sh, lists and Embree's input included
+/// (docs/measured-choices.md).
 constexpr std::size_t kHeapPerObject = 1024;
+constexpr std::uintmax_t kHeapPerTextByte = 8;
 
 class SceneBuilder {
 public:
@@ -229,10 +235,7 @@ public:
         surfaces_->reserve(surfaces_->size() + n);
         if (fresh) {
             AdviseHugePages(*surfaces_);
-            // A large scene's other blocks in huge pages too: about 1 KiB of
-            // heap per object was measured to cover the office of
-            // bench/big_scene.sh, lists and Embree's input included
-            // (docs/measured-choices.md).
+            // A large scene's other blocks in huge pages too.
             ReserveHeapInHugePages(n * kHeapPerObject);
         }
     }
@@ -1223,6 +1226,10 @@ SceneAssembler::SceneAssembler(const WarningSink& warn, const SceneLoadOptions& 
 SceneAssembler::~SceneAssembler() = default;
 void SceneAssembler::Add(SceneObject& object) { impl_->builder.Add(object); }
 void SceneAssembler::ReserveSurfaces(std::size_t n) { impl_->builder.ReserveSurfaces(n); }
+void SceneAssembler::ReserveForText(std::uintmax_t bytes) {
+    ReserveHeapInHugePages(
+        static_cast<std::size_t>(std::min<std::uintmax_t>(bytes, 1ULL << 40) * kHeapPerTextByte));
+}
 Scene SceneAssembler::Finish() { return impl_->builder.Finish(); }
 
 Scene BuildScene(std::vector<SceneObject> objects, const WarningSink& warn,

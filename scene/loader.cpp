@@ -7,7 +7,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/huge_pages.h"
 #include "scene/octree.h"
 #include "scene/radiance_binary.h"
 #include "scene/reader.h"
@@ -214,22 +213,16 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
         }
         return LoadOctree(*in, file, options, warn);
     }
-    // A large scene's heap in huge pages, as SceneBuilder::ReserveSurfaces
-    // does from an octree's object count: bytes of heap per byte of scene
-    // text (an exported model's object takes some 150 bytes of text and 1 KiB
-    // of heap, docs/measured-choices.md).
-    constexpr std::uintmax_t kHeapPerTextByte = 8;
-    std::uintmax_t textBytes = 0;
+    // Each object is interpreted as it is read (Radiance's readobj() also
+    // resolves modifiers as it goes).
+    SceneAssembler assembler(warn, options);
+    std::uintmax_t textBytes = 0;  // files only: a pipe's size is unknown
     for (const std::string& file : files) {
         std::error_code ec;
         const std::uintmax_t size = file == "-" ? 0 : std::filesystem::file_size(file, ec);
         if (!ec) textBytes += size;
     }
-    ReserveHeapInHugePages(
-        static_cast<std::size_t>(std::min<std::uintmax_t>(textBytes, 1ULL << 40) * kHeapPerTextByte));
-    // Each object is interpreted as it is read (Radiance's readobj() also
-    // resolves modifiers as it goes).
-    SceneAssembler assembler(warn, options);
+    assembler.ReserveForText(textBytes);
     const auto add = [&assembler](SceneObject& o) { assembler.Add(o); };
     for (const std::string& file : files) {
         if (file == "-") {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <memory>
 #include <string>
@@ -67,8 +68,11 @@ public:
 
     /// Interprets the next object (BuildScene's errors); a surface takes its strings.
     void Add(SceneObject& object);
-    /// Room for `n` more surfaces.
+    /// Room for `n` more surfaces (and, for a large scene, heap in huge pages).
     void ReserveSurfaces(std::size_t n);
+    /// For scene text of `bytes` whose object count is unknown: heap in huge
+    /// pages, as ReserveSurfaces reserves it for a counted scene.
+    void ReserveForText(std::uintmax_t bytes);
     /// The scene; the assembler is spent.
     Scene Finish();
 
