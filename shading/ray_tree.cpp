@@ -358,7 +358,7 @@ RayResult RayTree::TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir,
         ray.org = org + dir * (kImmediateOffset * scale);
         ray.dir = -dir;
         ray.rmax = 0;
-        ray.rot = ray.rxt = ray.rmt = kImmediateHit * scale;
+        ray.rot = ray.rxt = kImmediateHit * scale;  // rmt stays kFhuge (Radiance)
         ray.rop = OffWallsThroughSensor(ray.org + ray.dir * ray.rot, dir,
                                         kImmediateOffset * scale);
         ray.ron = dir;

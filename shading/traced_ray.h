@@ -124,7 +124,9 @@ struct TracedRay {
         surface = hit.surface;
         instance = hit.instance;
         objectFromRender = patternSpace;
-        rot = rmt = rxt = hit.t;
+        // rmt stays kFhuge unless a pure specular reflection sets it, as in
+        // Radiance (its -oR prints 1e10 for an ordinary hit).
+        rot = rxt = hit.t;
         rop = hit.point;
         ron = geometricNormal = hit.normal;
         rod = -Dot(dir, hit.normal);

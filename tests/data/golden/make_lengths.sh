@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Makes the reference for Golden.RayLengthsMatchRadiance with real Radiance
+# 5.4a: 400 rays from random points of the mixed room (scenes/mixed) in random
+# directions, and Radiance's -oLlRX for them at -ab 0 -dj 0 (deterministic):
+# first-hit length, effective length, mirrored length (1e10 unless a pure
+# specular reflection set it) and unmirrored length. The test only reads the
+# committed files; this script is for a developer who has Radiance at hand.
+#
+#   tests/data/golden/make_lengths.sh [radiance-dir]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+rad="${1:-$root/../shared/reference/radiance-5.4a}"
+[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
+export RAYPATH=".:$rad/lib"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+python3 - > "$here/mixed_lengths.rays" <<'PY'
+import random
+random.seed(3)
+for _ in range(400):
+    o = [random.uniform(0.5, 5.5), random.uniform(0.5, 3.5), random.uniform(0.3, 2.5)]
+    d = [random.gauss(0, 1) for _ in range(3)]
+    print(*o, *d)
+PY
+"$rad/bin/oconv" "$root/scenes/mixed/mixed.rad" > "$tmp/mixed.oct"
+"$rad/bin/rtrace" -h -oLlRX -ab 0 -dj 0 "$tmp/mixed.oct" < "$here/mixed_lengths.rays" \
+    > "$here/mixed_lengths_oLlRX.txt"
