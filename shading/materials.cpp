@@ -68,7 +68,10 @@ void ShadeNormal(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mat
     const bool isTrans = m.type == MaterialType::Trans;
     if ((ray.crtype & kShadowRay) && !isTrans) return;  // opaque to shadow rays
     if (ray.rod < 0.0) {
-        if (!setup.shading.backfaceVisible && !isTrans) {
+        // With -bv- a back face passes the ray, trans included (Radiance 5.4a;
+        // older versions shaded trans from behind whatever -bv). Shadow rays
+        // reach here only for trans: opaque faces stopped them above.
+        if (!setup.shading.backfaceVisible) {
             tree.PassThrough(ts, ray);
             return;
         }

@@ -151,6 +151,26 @@ TEST(Golden, DaylitRoomFromGeneratorLinesMatchesRadiance) {
                "daylit_room/ref/cam32x24_ab0_ovlpnNm.txt");
 }
 
+/// A `trans` surface seen from its back, by a view ray and by shadow rays, at
+/// -bv+ and -bv- (tests/data/backface/make_refs.sh): with -bv- Radiance 5.4a
+/// passes the ray through as for any material; lazyrad shaded trans from
+/// behind whatever -bv until 2026-12-05.
+TEST(Golden, TransBackFacesFollowBv) {
+    const std::string data = kSource + "/tests/data/backface/";
+    for (const std::string bv : {"+", "-"}) {
+        for (const std::string scene : {"trans_view", "trans_rough_view"}) {
+            CompareOutput(scene + " -bv" + bv,
+                          kRtrace + " -h -ab 0 -dj 0 -ss 0 -bv" + bv + " -ov " + data + scene +
+                              ".rad < " + data + "view.rays",
+                          data + scene + "_bv" + bv + ".txt");
+        }
+        CompareOutput("trans_shadow -bv" + bv,
+                      kRtrace + " -h -I -ab 0 -dj 0 -bv" + bv + " -ov " + data +
+                          "trans_shadow.rad < " + data + "shadow.pts",
+                      data + "trans_shadow_bv" + bv + ".txt");
+    }
+}
+
 /// -oLlRX (first-hit, effective, mirrored and unmirrored ray lengths) for 400
 /// rays from random points of the mixed room in random directions, against
 /// Radiance's (tests/data/golden/make_lengths.sh): the mirrored length is 1e10
