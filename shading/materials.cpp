@@ -274,11 +274,14 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
     // A glow beyond its radius (or with radius 0) acts as a far-away emitter
     // that indirect rays may see.
     auto distantGlow = [&](double d) { return isGlow && p.radius >= -kFtiny && d > p.radius; };
+    // Radiance's m_light() in its order. A ray the source must not answer
+    // gets a zero coefficient as well as no light, as -oW and the trace show.
+    const auto ignore = [&ray] { ray.rcoef = Rgb(); };
     // Indirect and sampled specular rays must not count sources again: the
     // direct calculation already has them.
     if ((ray.crtype & (kAmbientRay | kSpecularRay)) &&
         !((ray.crtype & kShadowRay) || ray.rod < 0.0 || distantGlow(ray.rot))) {
-        return;
+        return ignore();
     }
     const bool aimedElsewhere =
         ray.rsrc >= 0 && (ray.instance >= 0 || setup.sources[ray.rsrc].surface != ray.surface);
@@ -287,7 +290,7 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         const Material& aimed = setup.scene.materials[aimedSource.material];
         bool illumBlocks = ray.rod > 0.0 && !aimedSource.IsVirtual() &&
                            (aimed.type == MaterialType::Illum || aimed.type == MaterialType::Glow);
-        if (m.type != MaterialType::Illum || illumBlocks) return;  // wrong source
+        if (m.type != MaterialType::Illum || illumBlocks) return ignore();  // wrong source
     }
     if (m.type == MaterialType::Illum && (ray.rsrc < 0 || aimedElsewhere)) {
         // An illum not hit on purpose shows its alternate material, or nothing.
@@ -298,10 +301,16 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         }
         return;
     }
-    if (ray.rod < 0.0) return;  // black from behind
-    if (!setup.shading.direct.sourcesVisible && !(ray.crtype & kShadowRay) && !distantGlow(ray.rot)) {
-        return;  // -dv-
+    // -dv-: invisible, from the back too. A glow counts as far by the
+    // primary path's length (Radiance's raydist(r, PRIMARY)): the distance
+    // summed over the ray and the pass-through rays before it.
+    if (!setup.shading.direct.sourcesVisible && !(ray.crtype & kShadowRay)) {
+        double primaryDistance = 0;
+        for (const TracedRay* r = &ray; r && (r->crtype & kPrimaryRay); r = r->parent)
+            primaryDistance += r->rot;
+        if (!distantGlow(primaryDistance)) return ignore();
     }
+    if (ray.rod < 0.0) return;  // black from behind
     if (m.type == MaterialType::Spotlight) {
         if (OutsideSpot(SpotSolidAngle(p.coneAngleDegrees), Normalize(p.aim), ray.dir)) return;
     }

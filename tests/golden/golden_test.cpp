@@ -132,6 +132,27 @@ void CompareAb0(const std::string& scene, const std::string& rays, const std::st
                   kSource + "/scenes/" + ref);
 }
 
+/// Runs `cmd` and compares every number of its output with the same number in
+/// Radiance's `refPath`, within kMaxLastDigits units of the 7th digit (counting
+/// magnitudes below kGeometryFloor as zero); `label` names the case.
+void CompareNumbers(const std::string& label, const std::string& cmd, const std::string& refPath) {
+    std::istringstream out(RunCommand(cmd));
+    std::ifstream refFile(refPath);
+    ASSERT_TRUE(refFile) << refPath;
+    const auto got = ParseRows(out);
+    const auto want = ParseRows(refFile);
+    ASSERT_EQ(got.size(), want.size()) << label;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        ASSERT_EQ(got[i].numbers.size(), want[i].numbers.size()) << label << " line " << i + 1;
+        for (std::size_t k = 0; k < want[i].numbers.size(); ++k) {
+            EXPECT_LE(LastDigitsApart(got[i].numbers[k], want[i].numbers[k], kGeometryFloor),
+                      kMaxLastDigits + 1e-6)
+                << label << " line " << i + 1 << " number " << k + 1 << ": " << got[i].numbers[k]
+                << " vs Radiance " << want[i].numbers[k];
+        }
+    }
+}
+
 TEST(Golden, CornellDirectMatchesRadiance) {
     CompareAb0("cornell/cornell.rad", "cornell/cam32.rays", "cornell/ref/cam32_ab0_ovlpnNm.txt");
 }
@@ -179,23 +200,22 @@ TEST(Golden, TransBackFacesFollowBv) {
 /// mirror length, 21 an unmirrored length beyond the first hit.
 TEST(Golden, RayLengthsMatchRadiance) {
     const std::string data = kSource + "/tests/data/golden/";
-    std::istringstream out(RunCommand(kRtrace + " -h -oLlRX -ab 0 -dj 0 " + kSource +
-                                      "/scenes/mixed/mixed.rad < " + data + "mixed_lengths.rays"));
-    std::ifstream refFile(data + "mixed_lengths_oLlRX.txt");
-    ASSERT_TRUE(refFile);
-    const auto got = ParseRows(out);
-    const auto want = ParseRows(refFile);
-    ASSERT_EQ(got.size(), want.size());
-    static const char* const kFields[4] = {"L", "l", "R", "X"};
-    for (std::size_t i = 0; i < want.size(); ++i) {
-        ASSERT_EQ(want[i].numbers.size(), 4u);
-        ASSERT_EQ(got[i].numbers.size(), 4u) << "line " << i + 1;
-        for (int k = 0; k < 4; ++k) {
-            EXPECT_LE(LastDigitsApart(got[i].numbers[k], want[i].numbers[k], kGeometryFloor),
-                      kMaxLastDigits + 1e-6)
-                << "line " << i + 1 << " " << kFields[k] << ": " << got[i].numbers[k]
-                << " vs Radiance " << want[i].numbers[k];
-        }
+    CompareNumbers("-oLlRX", kRtrace + " -h -oLlRX -ab 0 -dj 0 " + kSource +
+                                 "/scenes/mixed/mixed.rad < " + data + "mixed_lengths.rays",
+                   data + "mixed_lengths_oLlRX.txt");
+}
+
+/// Light sources under -dv+ and -dv- (tests/data/sourcevis/make_refs.sh), value
+/// and coefficient (-ovW): with -dv- a light gives no light and a zero
+/// coefficient from either side, and a glow is hidden unless the primary
+/// path's whole length, through a glass pane too, exceeds its radius.
+TEST(Golden, InvisibleSourcesFollowRadiance) {
+    const std::string data = kSource + "/tests/data/sourcevis/";
+    for (const std::string dv : {"+", "-"}) {
+        CompareNumbers("-dv" + dv,
+                       kRtrace + " -h -ab 0 -dv" + dv + " -ovW " + data +
+                           "glow_through_glass.rad < " + data + "rays.txt 2>/dev/null",
+                       data + "ovW_dv" + dv + ".txt");
     }
 }
 
