@@ -266,7 +266,9 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         SourceTally& tally = ts.sourceTallies[c.source];
         tally.ntests++;
         ++ts.stats.shadowRays;
-        if (s_.queryShadows && !ts.traceShadows) {
+        // With trace output every shadow ray takes the path below, which
+        // finds what blocks it and reports it as Radiance does.
+        if (s_.queryShadows && !RayTree::Tracing(ts)) {
             // Stop just short of the sample point on the source itself (for
             // an image: of the relay).
             const double reach =
@@ -309,7 +311,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             sray.rcol = Rgb();
             tree_.Shade(ts, sray);
             tree_.Participate(ts, sray);
-            tree_.Report(ts, sray);
+            tree_.ReportFollowedShadow(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;
             } else {

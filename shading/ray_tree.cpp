@@ -298,6 +298,12 @@ void RayTree::Report(ThreadState& ts, const TracedRay& ray) const {
     ts.trace(MakeResult(ts, ray));
 }
 
+void RayTree::ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const {
+    if (ts.trace) ts.trace(MakeResult(ts, ray));
+}
+
+bool RayTree::Tracing(const ThreadState& ts) { return static_cast<bool>(ts.trace); }
+
 RayResult RayTree::MakeResult(ThreadState& ts, const TracedRay& ray) const {
     RayResult r;
     r.origin = ray.org;

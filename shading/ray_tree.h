@@ -76,8 +76,15 @@ public:
     /// The share of a shadow ray's light that crosses `distance` of
     /// `medium` (scattering counts as no loss for shadow rays, as Radiance).
     static Rgb ShadowTransmittance(const Medium& medium, double distance);
-    /// Hands a finished ray to the trace callback (-ot/-oT), if any.
+    /// Hands a finished ray to the trace callback (-ot/-oT), if any; shadow
+    /// rays only with -oT.
     void Report(ThreadState& ts, const TracedRay& ray) const;
+    /// Report() for a shadow ray that met something other than its source and
+    /// was followed past it (Radiance's raycont() in direct()): reported with
+    /// -ot too, as Radiance's trace hook sees it.
+    void ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const;
+    /// Whether trace output wants rays reported (-ot or -oT).
+    static bool Tracing(const ThreadState& ts);
 
     const ShadingSetup& setup() const { return s_; }
     const DirectLight& direct() const { return direct_; }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Makes the reference for Golden.RayLengthsMatchRadiance with real Radiance
+# Makes the references for Golden.RayLengthsMatchRadiance and
+# Golden.TraceReportsBlockedShadowRays with real Radiance
 # 5.4a: 400 rays from random points of the mixed room (scenes/mixed) in random
 # directions, and Radiance's -oLlRX for them at -ab 0 -dj 0 (deterministic):
 # first-hit length, effective length, mirrored length (1e10 unless a pure
@@ -26,3 +27,21 @@ PY
 "$rad/bin/oconv" "$root/scenes/mixed/mixed.rad" > "$tmp/mixed.oct"
 "$rad/bin/rtrace" -h -oLlRX -ab 0 -dj 0 "$tmp/mixed.oct" < "$here/mixed_lengths.rays" \
     > "$here/mixed_lengths_oLlRX.txt"
+
+# Golden.TraceReportsBlockedShadowRays: -otvsL (the ray tree: value, surface,
+# length of every ray, tab-indented by depth) for 60 random rays in the
+# cornell box at -ab 0 -dj 0 -dt 0 -ss 0 -u-. Shadow rays appear where
+# something other than their source stops them (Radiance's raycont() in
+# direct()); the cornell box's lamp is not a distant source, and there
+# Radiance's obstructor cache hides none of them on these rays.
+python3 - > "$here/cornell_trace.rays" <<'PY'
+import random
+rnd = random.Random(11)
+for _ in range(60):
+    o = [rnd.uniform(0.2, 5.3), rnd.uniform(0.2, 5.3), rnd.uniform(0.2, 5.2)]
+    d = [rnd.gauss(0, 1) for _ in range(3)]
+    print(' '.join(f'{x:.6f}' for x in o + d))
+PY
+(cd "$root/scenes/cornell" && "$rad/bin/oconv" cornell.rad > "$tmp/cornell.oct" &&
+    "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -u- -otvsL "$tmp/cornell.oct" \
+        < "$here/cornell_trace.rays" > "$here/cornell_otvsL.txt")
