@@ -229,7 +229,7 @@ int ParsePhotonMap(RtraceOptions& o, std::span<const std::string> v, const Warni
     if (v.empty() || !IsWordArgument(v[0])) return -1;
     PhotonMapOption map{v[0], kDefaultPhotonGather, kDefaultPhotonGather};
     if (v.size() < 2 || !IsIntArgument(v[1])) {
-        warn("no photon lookup bandwidth specified, using default " +
+        warn("missing photon lookup bandwidth, defaulting to " +
              std::to_string(kDefaultPhotonGather));
         o.photonMaps.push_back(map);
         return 1;
@@ -600,8 +600,11 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
         ExpandInPlace(args, k);
         if (k >= args.size()) break;
         // "-" is a scene on standard input; a "!command" argument is one whose
-        // output is an octree.
-        if (args[k].empty() || (args[k][0] == '-' && args[k] != "-")) CommandLineError(args[k]);
+        // output is an octree. An option among the scenes is an error named
+        // after the first scene, as Radiance names the octree when more than
+        // one argument follows the options.
+        if (args[k].empty()) CommandLineError(args[k]);
+        if (args[k][0] == '-' && args[k] != "-") CommandLineError(args[i]);
         cl.sceneFiles.push_back(args[k]);
     }
     if (cl.sceneFiles.empty()) ThrowUserError("missing octree argument");

@@ -246,6 +246,14 @@ TEST(RtraceOptionsParse, TogglesFollowRadianceSuffixes) {
     EXPECT_EQ(ErrorOf({"-h++", "s.rad"}), "command line error at '-h++'");
 }
 
+/// An option after the scene is an error named after the first scene, as
+/// Radiance names its octree when more than one argument follows the options.
+TEST(RtraceOptionsParse, OptionAfterTheSceneNamesTheScene) {
+    EXPECT_EQ(ErrorOf({"-h", "a.oct", "-ab", "1"}), "command line error at 'a.oct'");
+    EXPECT_EQ(ErrorOf({"a.rad", "b.rad", "-ab"}), "command line error at 'a.rad'");
+    EXPECT_EQ(ErrorOf({"-ld", "2", "a.oct"}).find("command line error"), std::string::npos);
+}
+
 /// -ah (lazyrad's record methods): mixed by default, + Hessian, - classic,
 /// m mixed, a bare -ah Hessian; a bad suffix is a one-line error, and -defaults
 /// does not list it.
@@ -369,7 +377,7 @@ TEST(RtraceOptionsParse, PhotonMapOption) {
     CommandLine cl = Parse({"-ap", "g.pm", "s.rad"}, &warnings);
     ASSERT_EQ(cl.options.photonMaps.size(), 1u);
     EXPECT_EQ(cl.options.ambient.bounces, 1);  // a photon map implies -ab 1
-    EXPECT_EQ(warnings, std::vector<std::string>{"no photon lookup bandwidth specified, using default 40"});
+    EXPECT_EQ(warnings, std::vector<std::string>{"missing photon lookup bandwidth, defaulting to 40"});
     cl = Parse({"-ab", "3", "-ap", "g.pm", "50", "100", "s.rad"});
     EXPECT_EQ(cl.options.ambient.bounces, 3);
     EXPECT_EQ(cl.options.photonMaps[0].minGather, 50);
