@@ -303,14 +303,14 @@ TEST(RtraceOptionsParse, RejectsBadValuesAndUnknownOptions) {
     EXPECT_EQ(ErrorOf({"-n", "0", "s.rad"}), "bad number of processes");
     EXPECT_EQ(ErrorOf({"-am", "0", "s.rad"}), "invalid max photon search radius coefficient");
     EXPECT_EQ(ErrorOf({"-ab", "2"}), "missing octree argument");
-    EXPECT_EQ(ErrorOf({"s.rad", "-ab", "2"}), "command line error at '-ab'");
+    EXPECT_EQ(ErrorOf({"s.rad", "-ab", "2"}), "command line error at 's.rad'");
     EXPECT_EQ(ErrorOf({"-n", "2", "-P", "pf", "s.rad"}),
               "multiprocessing incompatible with persist file");
     // Octrees, octree commands and standard input are scene arguments.
     EXPECT_EQ(ErrorOf({"scene.oct"}), "(no error)");
     EXPECT_EQ(ErrorOf({"!oconv x.rad"}), "(no error)");
     EXPECT_EQ(ErrorOf({"-"}), "(no error)");
-    EXPECT_EQ(ErrorOf({"s.rad", "-x"}), "command line error at '-x'");
+    EXPECT_EQ(ErrorOf({"s.rad", "-x"}), "command line error at 's.rad'");
     // Radiance's validation accepts these forms.
     EXPECT_EQ(ParseOptions({"-aa", "+.5e-1"}).ambient.accuracy, 0.05);
     EXPECT_EQ(ParseOptions({"-ab", "-0"}).ambient.bounces, 0);
