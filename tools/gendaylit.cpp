@@ -215,8 +215,10 @@ double NormalisationIntegral(const PerezCoefficients& p, double zenith) {
 
 void PrintErrorSky(double solarTime, double altitude, double azimuth, const Direction& sun) {
     std::printf("# Local solar time: %.2f\n", solarTime);
-    std::printf("# Solar altitude and azimuth: %.1f %.1f\n", altitude / kRadiansPerDegree,
-                azimuth / kRadiansPerDegree);
+    // Degrees as Radiance prints them (x·180/π, which can round the other
+    // way from x/(π/180) at the printed digit: 43.45° input prints 43.4).
+    std::printf("# Solar altitude and azimuth: %.1f %.1f\n", altitude * 180 / kPi,
+                azimuth * 180 / kPi);
     std::printf("\nvoid brightfunc skyfunc\n2 skybright perezlum.cal\n0\n");
     std::printf("10 0.00 0.00  0.000 0.000 0.000 0.000 0.000  %f %f %f \n", sun.x, sun.y, sun.z);
 }
@@ -418,116 +420,46 @@ int main(int argc, char** argv) {
                                 0.00128 * std::sin(dayAngle) + 0.000719 * std::cos(2 * dayAngle) +
                                 0.000077 * std::sin(2 * dayAngle);
 
-    // Inputs as direct-normal and diffuse-horizontal irradiance (W/m²) or,
-    // for -L, illuminance (lux).
-    double directNormal = 0, diffuse = 0;
-    double erbs[4] = {0, 0, 0, 0};  // s0, kt, direct horizontal, diffuse (-E)
-    if (o.input == Input::DirectNormal || o.input == Input::Illuminance) {
-        directNormal = o.value1;
-        diffuse = o.value2;
-    } else if (o.input == Input::DirectHorizontal || o.input == Input::Global) {
-        double directHorizontal = o.value1;
-        diffuse = o.value2;
-        if (o.input == Input::Global) {
-            directHorizontal = diffuse = 0;
-            if (altitude > 0) {
-                // Erbs, Klein & Duffie (1982): the diffuse fraction from the
-                // clearness index kt against the extraterrestrial irradiance.
-                double global = o.value1;
-                const double s0 = kSolarConstant * eccentricity * std::sin(altitude);
-                double kt = global / s0;
-                if (kt > 1) {
-                    Warn(o, "Warning: global irradiance is higher than the time-dependent "
-                            "solar constant s0\n");
-                    kt = 0.999;
-                    global = kt * s0;
-                }
-                double kd;
-                if (kt <= 0.22) {
-                    kd = 1 - 0.09 * kt;
-                } else if (kt <= 0.80) {
-                    kd = 0.9511 - 0.1604 * kt + 4.388 * kt * kt - 16.638 * kt * kt * kt +
-                         12.336 * kt * kt * kt * kt;
-                } else {
-                    kd = 0.165;
-                }
-                diffuse = kd * global;
-                directHorizontal = global - diffuse;
-                erbs[0] = s0;
-                erbs[1] = kt;
-                erbs[2] = directHorizontal;
-                erbs[3] = diffuse;
-            }
+    // The sun's zenith angle (radians). Radiance's air_mass() limits it to
+    // the horizon, with a warning, the first time it is called, and every
+    // formula after that call sees the limited angle (-L's first clearness
+    // comes before it and does not).
+    double zenith = kPi / 2 - altitude;
+    auto airMass = [&]() {
+        if (zenith > kPi / 2) {
+            Warn(o, "Warning: air mass has reached the maximal value\n");
+            zenith = kPi / 2;
         }
-        if (o.input == Input::DirectHorizontal || altitude > 0) {
-            if (directHorizontal < 0) {
-                Warn(o, "Warning: direct irradiance < 0. Using 0.0\n");
-                directHorizontal = 0;
-            }
-            if (diffuse < 0) {
-                Warn(o, "Warning: diffuse irradiance < 0. Using 0.0\n");
-                diffuse = 0;
-            }
-            if (altitude > 0) {
-                directNormal = directHorizontal / std::sin(altitude);
-            } else {
-                Warn(o, "Warning: sun altitude < 0, proceed with irradiance values of zero\n");
-                diffuse = 0;
-            }
-        }
-    }
-    const bool illuminance = o.input == Input::Illuminance;
-    if (o.input == Input::DirectNormal || illuminance) {
-        const char* kind = illuminance ? "illuminance" : "irradiance";
-        if (directNormal < 0) {
-            Warn(o, "Warning: direct %s < 0. Using 0.0\n", kind);
-            directNormal = 0;
-        }
-        if (diffuse < 0) {
-            Warn(o, "Warning: diffuse %s < 0. Using 0.0\n", kind);
-            diffuse = 0;
-        }
-    }
-    if (o.input != Input::Perez && directNormal == 0 && diffuse == 0 && altitude > 0) {
-        Warn(o, "Warning: zero irradiance at sun altitude > 0, printing error sky\n");
-        return errorSky();
-    }
-    if (illuminance && directNormal > kSolarIlluminance) {
-        Warn(o, "Warning: direct illuminance exceeds solar constant\n");
-        return errorSky();
-    }
-
-    // Relative optical air mass (Kasten 1966); below the horizon the sun is
-    // taken at the horizon for everything that follows.
-    double zenith = kPi / 2 - altitude;  // radians
-    if (zenith > kPi / 2) {
-        Warn(o, "Warning: air mass has reached the maximal value\n");
-        zenith = kPi / 2;
-    }
-    const double zenithDegrees = zenith / kRadiansPerDegree;
-    const double airMass =
-        1 / (std::cos(zenith) + 0.15 * std::exp(std::log(93.885 - zenithDegrees) * -1.253));
-    const double zenithCubed = 1.041 * zenith * zenith * zenith;
-
+        const double zenithDegrees = zenith / kRadiansPerDegree;
+        return 1 / (std::cos(zenith) + 0.15 * std::exp(std::log(93.885 - zenithDegrees) * -1.253));
+    };
     auto clearness = [&](double dn, double dh) {
-        return ((dh + dn) / dh + zenithCubed) / (1 + zenithCubed);
+        const double z3 = 1.041 * zenith * zenith * zenith;
+        return ((dh + dn) / dh + z3) / (1 + z3);
     };
-    auto brightness = [&](double dh) {
-        return dh * airMass / (kSolarConstant * eccentricity);
-    };
+    auto brightness = [&](double dh) { return dh * airMass() / (kSolarConstant * eccentricity); };
+    // Radiance's check_parametrization(): ε and Δ into the models' range.
     auto clamp = [](double& epsilon, double& delta) {
         if (epsilon < 1) epsilon = 1;
         if (epsilon > 12.01) epsilon = 12.009;
         if (delta < 0.01) delta = 0.01;
         if (delta > 0.6) delta = 0.6;
     };
-    auto diffuseEfficacy = [&](double epsilon, double delta) {
+    double epsilon = 0, delta = 0;
+    // Efficacies (lm/W) of the diffuse and direct light. The diffuse model
+    // has no bin for ε = 12.01 (only reachable with -P): Radiance prints the
+    // error sky there, which `clearnessTooHigh` reports.
+    bool clearnessTooHigh = false;
+    auto diffuseEfficacy = [&]() {
         const int bin = EfficacyBin(epsilon, 12.01);
-        if (bin < 0) return 0.0;
+        if (bin < 0) {
+            clearnessTooHigh = true;
+            return 0.0;
+        }
         const Efficacy& k = kDiffuseEfficacy[bin];
         return k.a + k.b * water + k.c * std::cos(zenith) + k.d * std::log(delta);
     };
-    auto directEfficacy = [&](double epsilon, double delta) {
+    auto directEfficacy = [&]() {
         const int bin = EfficacyBin(epsilon, 12.1);
         if (bin < 0) return 0.0;
         const Efficacy& k = kDirectEfficacy[bin];
@@ -535,56 +467,163 @@ int main(int argc, char** argv) {
         return value > 0 ? value : 0.0;
     };
 
-    double epsilon, delta;
-    double directIlluminance = 0, diffuseIlluminance = 0;  // lux
-    if (o.input == Input::Perez) {
-        epsilon = o.value1;
-        delta = o.value2;
+    // Direct-normal and diffuse-horizontal irradiance (W/m²) and
+    // illuminance (lux).
+    double directNormal = 0, diffuse = 0;
+    double directIlluminance = 0, diffuseIlluminance = 0;
+    // Radiance's check_irradiances() and check_illuminances(): negative
+    // values become 0, and no light with the sun up or a direct part above
+    // the solar constant gives the error sky (false).
+    auto checked = [&](double& direct, double& diff, const char* kind, double solarConstant) {
+        if (direct < 0) {
+            Warn(o, "Warning: direct %s < 0. Using 0.0\n", kind);
+            direct = 0;
+        }
+        if (diff < 0) {
+            Warn(o, "Warning: diffuse %s < 0. Using 0.0\n", kind);
+            diff = 0;
+        }
+        if (direct + diff == 0 && altitude > 0) {
+            Warn(o, "Warning: zero %s at sun altitude > 0, printing error sky\n", kind);
+            return false;
+        }
+        if (direct > solarConstant) {
+            Warn(o, "Warning: direct %s exceeds solar constant\n", kind);
+            return false;
+        }
+        return true;
+    };
+    auto irradiancesChecked = [&] {
+        return checked(directNormal, diffuse, "irradiance", kSolarConstant);
+    };
+    auto illuminancesChecked = [&] {
+        return checked(directIlluminance, diffuseIlluminance, "illuminance", kSolarIlluminance);
+    };
+    // ε and Δ from the irradiances, Δ first (it calls air_mass()).
+    auto skyFromIrradiances = [&] {
+        delta = brightness(diffuse);
+        epsilon = clearness(directNormal, diffuse);
         clamp(epsilon, delta);
-        diffuse = delta * kSolarConstant * eccentricity / airMass;
-        directNormal = diffuse * (epsilon - 1) * (1 + zenithCubed);
-    } else if (illuminance) {
-        directIlluminance = directNormal;
-        diffuseIlluminance = diffuse;
-        directNormal = directIlluminance * kSolarConstant / kSolarIlluminance;
-        diffuse = diffuseIlluminance * kSolarConstant / kSolarIlluminance;
-        for (int iteration = 0; iteration < 9; ++iteration) {
+    };
+    // The illuminances, for -O 0 and -O 2 only (Radiance computes and checks
+    // them for no other output); false: the error sky is printed.
+    auto illuminancesFromIrradiances = [&] {
+        if (output == Output::Solar) return true;
+        diffuseIlluminance = diffuse * diffuseEfficacy();
+        if (clearnessTooHigh) {
+            Warn(o, "Warning: sky clearness (= %.3f) too high, printing error sky\n", epsilon);
+            return false;
+        }
+        directIlluminance = directNormal * directEfficacy();
+        return illuminancesChecked();
+    };
+
+    switch (o.input) {
+        case Input::Perez:
+            epsilon = o.value1;
+            delta = o.value2;
+            clamp(epsilon, delta);
+            diffuse = delta * kSolarConstant * eccentricity / airMass();
+            directNormal = diffuse * (epsilon - 1) * (1 + 1.041 * zenith * zenith * zenith);
+            if (!irradiancesChecked() || !illuminancesFromIrradiances()) return errorSky();
+            break;
+        case Input::DirectNormal:
+            directNormal = o.value1;
+            diffuse = o.value2;
+            if (!irradiancesChecked()) return errorSky();
+            skyFromIrradiances();
+            if (!illuminancesFromIrradiances()) return errorSky();
+            break;
+        case Input::Illuminance: {
+            directIlluminance = o.value1;
+            diffuseIlluminance = o.value2;
+            if (!illuminancesChecked()) return errorSky();
+            // Radiance's illu_to_irra_index(): irradiances from the solar
+            // constant's efficacy, then nine rounds of the efficacy models
+            // (its loop's exit test never holds once ε and Δ are in range).
+            // The first ε comes before the first air_mass() call.
+            directNormal = directIlluminance * kSolarConstant / kSolarIlluminance;
+            diffuse = diffuseIlluminance * kSolarConstant / kSolarIlluminance;
             epsilon = clearness(directNormal, diffuse);
             delta = brightness(diffuse);
             clamp(epsilon, delta);
-            diffuse = diffuseIlluminance / diffuseEfficacy(epsilon, delta);
-            const double kb = directEfficacy(epsilon, delta);
-            directNormal = kb < 0.1 ? 0 : directIlluminance / kb;
+            for (int iteration = 0; iteration < 9; ++iteration) {
+                diffuse = diffuseIlluminance / diffuseEfficacy();
+                if (clearnessTooHigh) {
+                    Warn(o, "Warning: sky clearness (= %.3f) too high, printing error sky\n",
+                         epsilon);
+                    return errorSky();
+                }
+                const double kb = directEfficacy();
+                directNormal = kb < 0.1 ? 0 : directIlluminance / kb;
+                delta = brightness(diffuse);
+                epsilon = clearness(directNormal, diffuse);
+                clamp(epsilon, delta);
+            }
+            break;
         }
-        epsilon = clearness(directNormal, diffuse);
-        delta = brightness(diffuse);
-        clamp(epsilon, delta);
-    } else {
-        epsilon = clearness(directNormal, diffuse);
-        delta = brightness(diffuse);
-        clamp(epsilon, delta);
-    }
-    if (!(epsilon >= 1 && epsilon <= 12.01)) {
-        Warn(o, "Warning: sky clearness (= %f) too high, printing error sky\n", epsilon);
-        return errorSky();
-    }
-    if (directNormal > kSolarConstant) {
-        Warn(o, "Warning: direct irradiance exceeds solar constant\n");
-        return errorSky();
-    }
-    if (!illuminance) {
-        diffuseIlluminance = diffuse * diffuseEfficacy(epsilon, delta);
-        directIlluminance = directNormal * directEfficacy(epsilon, delta);
-        if (directIlluminance > kSolarIlluminance) {
-            Warn(o, "Warning: direct illuminance exceeds solar constant\n");
-            return errorSky();
+        case Input::DirectHorizontal:
+        case Input::Global: {
+            double directHorizontal = o.value1;
+            diffuse = o.value2;
+            if (o.input == Input::Global) {
+                directHorizontal = diffuse = 0;
+                if (altitude <= 0) {
+                    if (o.value1 > 50) {
+                        Warn(o, "Warning: global irradiance higher than 50 W/m^2 while the sun "
+                                "altitude is lower than zero\n");
+                    }
+                } else {
+                    // Erbs, Klein & Duffie (1982): the diffuse fraction from
+                    // the clearness index kt against the extraterrestrial
+                    // irradiance.
+                    double global = o.value1;
+                    const double s0 = kSolarConstant * eccentricity * std::sin(altitude);
+                    if (global > s0) {
+                        Warn(o, "Warning: global irradiance is higher than the time-dependent "
+                                "solar constant s0\n");
+                        global = s0 * 0.999;
+                    }
+                    const double kt = global / s0;
+                    double kd = 0;
+                    if (kt <= 0.22) {
+                        kd = 1 - 0.09 * kt;
+                    } else if (kt <= 0.80) {
+                        kd = 0.9511 - 0.1604 * kt + 4.388 * kt * kt - 16.638 * kt * kt * kt +
+                             12.336 * kt * kt * kt * kt;
+                    } else if (kt < 1) {
+                        kd = 0.165;
+                    }
+                    diffuse = kd * global;
+                    directHorizontal = global - diffuse;
+                    std::printf("# erbs_s0, erbs_kt, irr_dir_h, irr_diff: %.3f %.3f %.3f %.3f\n",
+                                s0, kt, directHorizontal, diffuse);
+                    std::printf("# WARNING: the -E option is only recommended for a rough "
+                                "estimation!\n");
+                }
+            } else if (altitude <= 0) {
+                Warn(o, "Warning: sun altitude < 0, proceed with irradiance values of zero\n");
+                directHorizontal = diffuse = 0;
+            }
+            directNormal = altitude > 0 ? directHorizontal / std::sin(altitude) : directHorizontal;
+            if (!irradiancesChecked()) return errorSky();
+            skyFromIrradiances();
+            if (!illuminancesFromIrradiances()) return errorSky();
+            break;
         }
     }
 
+    // Radiance's coeff_lum_perez() stops here for ε = 12.01 (-P 12.01 -O 1;
+    // larger values were clamped below it).
+    if (epsilon < 1 || epsilon >= 12.01) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "Error: epsilon out of range in function coeff_lum_perez!\n");
+        return 1;
+    }
     const PerezCoefficients perez = Coefficients(epsilon, delta, zenith);
     const double integral = NormalisationIntegral(perez, zenith);
     const double sunSolidAngle = 2 * kPi * (1 - std::cos(kSunHalfAngleDegrees * kRadiansPerDegree));
-    double skyNormalisation, solar;
+    double skyNormalisation = 0, solar = 0;
     switch (output) {
         case Output::Visible:
             skyNormalisation = diffuseIlluminance / (kWhiteEfficacy * integral);
@@ -614,15 +653,18 @@ int main(int argc, char** argv) {
     double ground = zenithRadiance * normalisation;
     if (o.sun && epsilon > 1) ground += kGroundSunSolidAngle / kPi * solar * std::sin(altitude);
     ground *= o.groundReflectance;
-
-    if (o.input == Input::Global && altitude > 0) {
-        std::printf("# erbs_s0, erbs_kt, irr_dir_h, irr_diff: %.3f %.3f %.3f %.3f\n", erbs[0],
-                    erbs[1], erbs[2], erbs[3]);
-        std::printf("# WARNING: the -E option is only recommended for a rough estimation!\n");
+    // A positive Perez b brightens the sky toward the horizon without bound
+    // (low suns with much direct light): Radiance prints the error sky.
+    if (perez.b > 0) {
+        Warn(o, "Warning: positive Perez parameter B (= %f), printing error sky\n", perez.b);
+        return errorSky();
     }
+
     std::printf("# Local solar time: %.2f\n", month != 0 ? solarTime : 0.0);
-    std::printf("# Solar altitude and azimuth: %.1f %.1f\n", altitude / kRadiansPerDegree,
-                azimuth / kRadiansPerDegree);
+    // Degrees as Radiance prints them (x·180/π, which can round the other
+    // way from x/(π/180) at the printed digit: 43.45° input prints 43.4).
+    std::printf("# Solar altitude and azimuth: %.1f %.1f\n", altitude * 180 / kPi,
+                azimuth * 180 / kPi);
     std::printf("# epsilon, delta, atmospheric precipitable water content : %.4f %.4f %.4f \n",
                 epsilon, delta, water);
     if (o.sun) {
