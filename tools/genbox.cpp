@@ -198,12 +198,6 @@ int main(int argc, char** argv) {
                      "-i) are not supported\n");
         return 1;
     }
-    for (double s : box.size) {
-        if (box.bevel > 0 && 2 * box.bevel > s) {
-            std::fprintf(stderr, "genbox: bevel %g too large for a box of size %g\n", box.bevel, s);
-            return 1;
-        }
-    }
     std::printf("#");
     for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
     std::printf("\n");

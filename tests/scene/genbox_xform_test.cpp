@@ -83,7 +83,7 @@ TEST(Genbox, EveryFormMatchesRadianceOutput) {
         EXPECT_EQ(run.output, want) << command;
         ++checked;
     }
-    EXPECT_EQ(checked, 6);
+    EXPECT_EQ(checked, 7);
 }
 
 TEST(Genbox, BoxIsClosedAndFacesOutward) {
@@ -130,9 +130,10 @@ TEST(Genbox, UsageErrors) {
     run = RunShell("genbox m b 1 one 1");
     EXPECT_EQ(run.status, 1);
     EXPECT_EQ(run.output, "genbox: bad size 'one'\n");
+    // A bevel wider than half the box is written as Radiance writes it (the
+    // faces cross; case7.rad of EveryFormMatchesRadianceOutput), not refused.
     run = RunShell("genbox m b 1 1 1 -b .6");
-    EXPECT_EQ(run.status, 1);
-    EXPECT_NE(run.output.find("too large"), std::string::npos);
+    EXPECT_EQ(run.status, 0);
     run = RunShell("genbox m b 1 0 1");  // Radiance: usage
     EXPECT_EQ(run.status, 1);
     EXPECT_NE(run.output.find("Usage: genbox"), std::string::npos);
