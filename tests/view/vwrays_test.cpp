@@ -76,6 +76,11 @@ TEST(Vwrays, DimensionsAndBinaryFormats) {
     EXPECT_NE(status, 0);
     (void)RunVwrays("-x 4 -y 4 -bogus 2>/dev/null", &status);
     EXPECT_EQ(status, 1);
+    // A bad view is reported in Radiance's words, without rvimage's "bad view: ".
+    EXPECT_EQ(RunVwrays("-x 4 -y 4 -vh 190 2>&1 >/dev/null", &status),
+              "vwrays: illegal horizontal view size\n");
+    EXPECT_EQ(RunVwrays("-x 4 -y 4 -vo 2 -va 1 2>&1 >/dev/null", &status),
+              "vwrays: illegal fore/aft clipping plane\n");
 }
 
 TEST(Vwrays, FisheyeCornersAreZeroRays) {
