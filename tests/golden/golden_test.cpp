@@ -184,11 +184,11 @@ TEST(Golden, DaylitRoomFromGeneratorLinesMatchesRadiance) {
 }
 
 /// A `trans` surface seen from its back, by a view ray and by shadow rays, at
-/// -bv+ and -bv- (tests/data/backface/make_refs.sh): with -bv- Radiance 5.4a
+/// -bv+ and -bv- (tests/data/shading_rules/make_refs.sh): with -bv- Radiance 5.4a
 /// passes the ray through as for any material; lazyrad shaded trans from
 /// behind whatever -bv until 2026-12-05.
 TEST(Golden, TransBackFacesFollowBv) {
-    const std::string data = kSource + "/tests/data/backface/";
+    const std::string data = kSource + "/tests/data/shading_rules/";
     for (const std::string bv : {"+", "-"}) {
         for (const std::string scene : {"trans_view", "trans_rough_view"}) {
             CompareOutput(scene + " -bv" + bv,
@@ -227,17 +227,17 @@ TEST(Golden, TraceReportsBlockedShadowRays) {
                    data + "cornell_otvsL.txt");
 }
 
-/// Light sources under -dv+ and -dv- (tests/data/sourcevis/make_refs.sh), value
+/// Light sources under -dv+ and -dv- (tests/data/shading_rules/make_refs.sh), value
 /// and coefficient (-ovW): with -dv- a light gives no light and a zero
 /// coefficient from either side, and a glow is hidden unless the primary
 /// path's whole length, through a glass pane too, exceeds its radius.
 TEST(Golden, InvisibleSourcesFollowRadiance) {
-    const std::string data = kSource + "/tests/data/sourcevis/";
+    const std::string data = kSource + "/tests/data/shading_rules/";
     for (const std::string dv : {"+", "-"}) {
         CompareNumbers("-dv" + dv,
                        kRtrace + " -h -ab 0 -dv" + dv + " -ovW " + data +
-                           "glow_through_glass.rad < " + data + "rays.txt 2>/dev/null",
-                       data + "ovW_dv" + dv + ".txt");
+                           "glow_through_glass.rad < " + data + "glow_rays.txt 2>/dev/null",
+                       data + "glow_ovW_dv" + dv + ".txt");
     }
 }
 
