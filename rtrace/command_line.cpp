@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -50,8 +51,14 @@ std::string FindOnRaypath(const std::string& name) {
 }
 
 std::vector<std::string> ReadWordFile(const std::string& name, const char* what) {
+    errno = 0;
     std::optional<std::vector<std::string>> words = ReadWords(FindOnRaypath(name));
-    if (!words) ThrowSystemError(std::string("cannot open ") + what + " file \"" + name + "\"");
+    if (!words) {
+        // With the reason, as Radiance's SYSTEM errors give it.
+        const int err = errno;
+        ThrowSystemError(std::string("cannot open ") + what + " file \"" + name + "\"" +
+                         (err != 0 ? std::string(": ") + std::strerror(err) : std::string()));
+    }
     return std::move(*words);
 }
 

@@ -369,7 +369,7 @@ TEST(RtraceOptionsParse, ListFiles) {
     o = ParseOptions({"-tI", path});
     EXPECT_EQ(o.traceModifiers.size(), 3u);
     EXPECT_EQ(ErrorOf({"-aI", "/nonexistent/mods", "s.rad"}),
-              "cannot open ambient include file \"/nonexistent/mods\"");
+              "cannot open ambient include file \"/nonexistent/mods\": No such file or directory");
 }
 
 TEST(RtraceOptionsParse, PhotonMapOption) {
