@@ -317,6 +317,9 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             } else {
                 c.value = sray.rcol * c.coef;
             }
+        } else if (ts.traceShadows && !hit && src.shape == LightSource::Shape::Distant &&
+                   !src.IsVirtual()) {
+            tree_.ReportShadowAtDistantSource(ts, sray);
         }
         if (!blocked) {
             ray.rcol += c.value;

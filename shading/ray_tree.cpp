@@ -304,6 +304,15 @@ void RayTree::ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const 
 
 bool RayTree::Tracing(const ThreadState& ts) { return static_cast<bool>(ts.trace); }
 
+void RayTree::ReportShadowAtDistantSource(ThreadState& ts, TracedRay& ray) const {
+    if (!ts.trace || !ts.traceShadows || !HitDistantSource(ray)) return;
+    const Surface& source = s_.scene.surfaces[ray.surface];
+    if (!ApplyModifiers(ts, ray, source.patterns)) {
+        ShadeMaterial(ts, ray, s_.scene.materials[source.material]);
+    }
+    Report(ts, ray);
+}
+
 RayResult RayTree::MakeResult(ThreadState& ts, const TracedRay& ray) const {
     RayResult r;
     r.origin = ray.org;

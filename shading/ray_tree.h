@@ -85,6 +85,10 @@ public:
     void ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const;
     /// Whether trace output wants rays reported (-ot or -oT).
     static bool Tracing(const ThreadState& ts);
+    /// With -oT, reports a shadow ray that met nothing on its way to a
+    /// distant source as the source it reaches, shaded (Radiance's direct()
+    /// traces such rays when sources are followed); the answer is unchanged.
+    void ReportShadowAtDistantSource(ThreadState& ts, TracedRay& ray) const;
 
     const ShadingSetup& setup() const { return s_; }
     const DirectLight& direct() const { return direct_; }

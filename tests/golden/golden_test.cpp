@@ -227,6 +227,21 @@ TEST(Golden, TraceReportsBlockedShadowRays) {
                    data + "cornell_otvsL.txt");
 }
 
+/// -oT in the daylit room (tests/data/golden/make_lengths.sh): a shadow ray
+/// that reaches the sun unobstructed is reported as the sun (Radiance traces
+/// it when -oT has it follow every source). One process per ray, as the
+/// reference was made: Radiance's obstructor cache, which lazyrad does not
+/// have, would otherwise hide blocked shadow rays of later rays (README,
+/// Differences).
+TEST(Golden, TraceFollowsShadowRaysToTheSun) {
+    const std::string data = kSource + "/tests/data/golden/";
+    CompareNumbers("-oTvsL", "while IFS= read -r ray; do echo \"$ray\" | " + kRtrace +
+                                 " -h -ab 0 -dj 0 -dt 0 -ss 0 -u- -oTvsL " + kSource +
+                                 "/scenes/daylit_room/daylit_room.rad; done < " + data +
+                                 "daylit_sun_trace.rays",
+                   data + "daylit_sun_oTvsL.txt");
+}
+
 /// Light sources under -dv+ and -dv- (tests/data/shading_rules/make_refs.sh), value
 /// and coefficient (-ovW): with -dv- a light gives no light and a zero
 /// coefficient from either side, and a glow is hidden unless the primary

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Makes the references for Golden.RayLengthsMatchRadiance and
-# Golden.TraceReportsBlockedShadowRays with real Radiance
-# 5.4a: 400 rays from random points of the mixed room (scenes/mixed) in random
-# directions, and Radiance's -oLlRX for them at -ab 0 -dj 0 (deterministic):
+# Makes the references for Golden.RayLengthsMatchRadiance,
+# Golden.TraceReportsBlockedShadowRays and Golden.TraceFollowsShadowRaysToTheSun
+# with real Radiance 5.4a. The first: 400 rays from random points of the
+# mixed room (scenes/mixed) in random directions, and Radiance's -oLlRX for
+# them at -ab 0 -dj 0 (deterministic):
 # first-hit length, effective length, mirrored length (1e10 unless a pure
 # specular reflection set it) and unmirrored length. The test only reads the
 # committed files; this script is for a developer who has Radiance at hand.
@@ -45,3 +46,14 @@ PY
 (cd "$root/scenes/cornell" && "$rad/bin/oconv" cornell.rad > "$tmp/cornell.oct" &&
     "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -u- -otvsL "$tmp/cornell.oct" \
         < "$here/cornell_trace.rays" > "$here/cornell_otvsL.txt")
+
+# Golden.TraceFollowsShadowRaysToTheSun: -oTvsL in the daylit room (sun and
+# sky) for 11 random rays, each traced by a process of its own, whose trees
+# include a shadow ray that reaches the sun (reported as the sun, with -oT)
+# and no shadow ray Radiance's obstructor cache would skip (it remembers
+# blockers across rays, hence one process per ray). The rays were picked from
+# 60 random ones by those two properties.
+(cd "$root/scenes/daylit_room" && "$rad/bin/oconv" daylit_room.rad > "$tmp/daylit.oct" &&
+    while IFS= read -r ray; do
+        echo "$ray" | "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -u- -oTvsL "$tmp/daylit.oct"
+    done < "$here/daylit_sun_trace.rays" > "$here/daylit_sun_oTvsL.txt")
