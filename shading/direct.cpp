@@ -176,7 +176,12 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
     // integral, which differs from Radiance's own converged answers in
     // penumbrae (README, "Differences"); lazyrad's contract is Radiance's
     // answer.
-    CollectSourceSamples(s_.sources, ray.rop, ray.sourceWeight, s_.shading.direct, ts.rng,
+    // Sources are divided for the shadow rays' weight, which the shading
+    // ray's path through a medium lowers (Radiance's srcray() partitions for
+    // the shadow ray rayorigin() made); a path that extinguished it has none.
+    const double partitionWeight = ray.sourceWeight * RayTree::MediumImportance(ray);
+    if (partitionWeight <= 0) return;
+    CollectSourceSamples(s_.sources, ray.rop, partitionWeight, s_.shading.direct, ts.rng,
                          scratch.samples, scratch.partitions);
     if (scratch.samples.empty()) return;
 
@@ -308,13 +313,15 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
                     ts.traceShadows)) {
             sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
             // Shaded past the surface in between (Radiance's raycont()).
+            // Reported and tested before the medium between the point and
+            // the surface acts on it, in Radiance's order.
             sray.rcol = Rgb();
             tree_.Shade(ts, sray);
-            tree_.Participate(ts, sray);
             tree_.ReportFollowedShadow(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;
             } else {
+                tree_.Participate(ts, sray);
                 c.value = sray.rcol * c.coef;
             }
         } else if (ts.traceShadows && !hit && src.shape == LightSource::Shape::Distant &&

@@ -34,6 +34,14 @@ Rgb Attenuation(const Rgb& depth) {
 
 }  // namespace
 
+double RayTree::MediumImportance(const TracedRay& parent) {
+    if (!parent.medium) return 1.0;
+    const Rgb& e = parent.medium->extinction;
+    const double re = std::min({e.r, e.g, e.b}) * parent.rot;
+    if (re <= 0.1) return 1.0;
+    return re > 92.0 ? 0.0 : std::exp(-re);
+}
+
 bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
                          unsigned type, const Rgb* coef) const {
     child.org = parent.rop;
@@ -46,13 +54,7 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
     child.rcoef = coef ? *coef : Rgb(1, 1, 1);
     double w = coef ? std::min(1.0, Intens(*coef)) : 1.0;
     child.medium = parent.medium;
-    // The parent's path through a medium lowers the child's importance
-    // (rayorigin()'s extinction estimate, from the clearest channel).
-    if (parent.medium) {
-        const Rgb& e = parent.medium->extinction;
-        const double re = std::min({e.r, e.g, e.b}) * parent.rot;
-        if (re > 0.1) w *= re > 92.0 ? 0.0 : std::exp(-re);
-    }
+    w *= MediumImportance(parent);
     child.rweight = parent.rweight * w;
     child.sourceWeight = parent.sourceWeight * w;
     if (type & kReflectionTypes) {

@@ -85,6 +85,11 @@ public:
     void ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const;
     /// Whether trace output wants rays reported (-ot or -oT).
     static bool Tracing(const ThreadState& ts);
+    /// The factor by which a ray's path through a medium lowers the weight of
+    /// the rays it starts, shadow rays included (rayorigin()'s extinction
+    /// estimate: exp(−σ·length) from the clearest channel, 1 below 0.1, 0
+    /// beyond 92).
+    static double MediumImportance(const TracedRay& parent);
     /// With -oT, reports a shadow ray that met nothing on its way to a
     /// distant source as the source it reaches, shaded (Radiance's direct()
     /// traces such rays when sources are followed); the answer is unchanged.

@@ -16,6 +16,11 @@
 # the whole primary path's length against the radius), and a light polygon
 # from the front and the back (with -dv- both give no light and a zero
 # coefficient W).
+#
+# Golden.MediumLowersSourcePartitionWeight: -ov at -ab 0 -dj 0 -dt 0 -ss 0 for
+# 60 random rays in the cornell box inside a global medium (-me .05 -ma .8
+# -mg .5): Radiance divides the lamp for the shadow rays' weight, which the
+# viewing ray's path through the medium lowers.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
@@ -38,3 +43,6 @@ for dv in + -; do
     "$rad/bin/rtrace" -h -ab 0 -dv$dv -ovW "$tmp/glow.oct" < glow_rays.txt 2>/dev/null \
         > "glow_ovW_dv$dv.txt"
 done
+(cd "$here/../../../scenes/cornell" && "$rad/bin/oconv" cornell.rad > "$tmp/cornell.oct" &&
+    "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -me .05 .05 .05 -ma .8 .8 .8 -mg .5 -ov \
+        "$tmp/cornell.oct" < "$here/medium_rays.txt" > "$here/medium_ov.txt")
