@@ -207,7 +207,7 @@ TEST(Golden, TransBackFacesFollowBv) {
 /// (tests/data/shading_rules/make_refs.sh): the lamp is divided for the shadow
 /// rays' weight, which the viewing ray's path through the medium lowers, as in
 /// Radiance (lazyrad divided it for the viewing ray's own weight until
-/// 2026-12-05: other samples, values up to 0.3 % off).
+/// 2026-12-05: other sample points, 8 of these rays off, one by 50 %).
 TEST(Golden, MediumLowersSourcePartitionWeight) {
     const std::string data = kSource + "/tests/data/shading_rules/";
     CompareNumbers("medium", kRtrace + " -h -ab 0 -dj 0 -dt 0 -ss 0 -me .05 .05 .05 -ma .8 .8 .8 "
