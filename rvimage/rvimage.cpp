@@ -211,7 +211,13 @@ int RunRvimage(std::span<const std::string> args, std::ostream& out, std::ostrea
         }
         if (!shell.OpenErrorFile(opt.errorFile, env.pid, cl.args)) return 2;
         const PictureSettings& s = cl.settings;
-        const PreparedView view = SetupView(s.view);
+        const PreparedView view = [&s] {
+            try {
+                return SetupView(s.view);
+            } catch (const Error& e) {
+                ThrowUserError(std::string("bad view: ") + e.what());
+            }
+        }();
         int width = s.xResolution, height = s.yResolution;
         double aspect = s.pixelAspect;
         NormalizeAspect(ViewAspect(view), aspect, width, height);

@@ -273,7 +273,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         ++ts.stats.shadowRays;
         // With trace output every shadow ray takes the path below, which
         // finds what blocks it and reports it as Radiance does.
-        if (s_.queryShadows && !RayTree::Tracing(ts)) {
+        if (s_.queryShadows && !ts.trace) {
             // Stop just short of the sample point on the source itself (for
             // an image: of the relay).
             const double reach =

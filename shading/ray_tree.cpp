@@ -116,10 +116,7 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
         ray.rot = kFhuge;
         ray.rop = ray.org + ray.dir * ray.rmax;
     } else if (HitDistantSource(ray)) {
-        const Surface& source = s_.scene.surfaces[ray.surface];
-        if (!ApplyModifiers(ts, ray, source.patterns)) {
-            ShadeMaterial(ts, ray, s_.scene.materials[source.material]);
-        }
+        ShadeDistantSource(ts, ray);
     } else {
         ray.rot = kFhuge;
         ray.rop = ray.org;
@@ -304,15 +301,17 @@ void RayTree::ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const 
     if (ts.trace) ts.trace(MakeResult(ts, ray));
 }
 
-bool RayTree::Tracing(const ThreadState& ts) { return static_cast<bool>(ts.trace); }
-
 void RayTree::ReportShadowAtDistantSource(ThreadState& ts, TracedRay& ray) const {
     if (!ts.trace || !ts.traceShadows || !HitDistantSource(ray)) return;
+    ShadeDistantSource(ts, ray);
+    Report(ts, ray);
+}
+
+void RayTree::ShadeDistantSource(ThreadState& ts, TracedRay& ray) const {
     const Surface& source = s_.scene.surfaces[ray.surface];
     if (!ApplyModifiers(ts, ray, source.patterns)) {
         ShadeMaterial(ts, ray, s_.scene.materials[source.material]);
     }
-    Report(ts, ray);
 }
 
 RayResult RayTree::MakeResult(ThreadState& ts, const TracedRay& ray) const {

@@ -83,8 +83,6 @@ public:
     /// was followed past it (Radiance's raycont() in direct()): reported with
     /// -ot too, as Radiance's trace hook sees it.
     void ReportFollowedShadow(ThreadState& ts, const TracedRay& ray) const;
-    /// Whether trace output wants rays reported (-ot or -oT).
-    static bool Tracing(const ThreadState& ts);
     /// The factor by which a ray's path through a medium lowers the weight of
     /// the rays it starts, shadow rays included (rayorigin()'s extinction
     /// estimate: exp(−σ·length) from the clearest channel, 1 below 0.1, 0
@@ -108,6 +106,9 @@ private:
     void ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRay& ray) const;
     /// Looks for a distant source in the ray's direction (sourcehit()).
     bool HitDistantSource(TracedRay& ray) const;
+    /// Shades a ray HitDistantSource() aimed at its source: the source's
+    /// modifiers, then its material.
+    void ShadeDistantSource(ThreadState& ts, TracedRay& ray) const;
     /// -I: a measuring point lying in the plane of a wall (a sensor on an
     /// edge or in a corner) would send half its sample rays through that
     /// wall, whose hit at t = 0 the self-hit rule discards. Moves the point

@@ -447,12 +447,14 @@ int main(int argc, char** argv) {
     };
     double epsilon = 0, delta = 0;
     // Efficacies (lm/W) of the diffuse and direct light. The diffuse model
-    // has no bin for ε = 12.01 (only reachable with -P): Radiance prints the
-    // error sky there, which `clearnessTooHigh` reports.
+    // has no bin for ε = 12.01 (only reachable with -P): Radiance warns and
+    // prints the error sky there, which `clearnessTooHigh` asks the caller
+    // to do.
     bool clearnessTooHigh = false;
     auto diffuseEfficacy = [&]() {
         const int bin = EfficacyBin(epsilon, 12.01);
         if (bin < 0) {
+            Warn(o, "Warning: sky clearness (= %.3f) too high, printing error sky\n", epsilon);
             clearnessTooHigh = true;
             return 0.0;
         }
@@ -510,10 +512,7 @@ int main(int argc, char** argv) {
     auto illuminancesFromIrradiances = [&] {
         if (output == Output::Solar) return true;
         diffuseIlluminance = diffuse * diffuseEfficacy();
-        if (clearnessTooHigh) {
-            Warn(o, "Warning: sky clearness (= %.3f) too high, printing error sky\n", epsilon);
-            return false;
-        }
+        if (clearnessTooHigh) return false;
         directIlluminance = directNormal * directEfficacy();
         return illuminancesChecked();
     };
@@ -549,11 +548,7 @@ int main(int argc, char** argv) {
             clamp(epsilon, delta);
             for (int iteration = 0; iteration < 9; ++iteration) {
                 diffuse = diffuseIlluminance / diffuseEfficacy();
-                if (clearnessTooHigh) {
-                    Warn(o, "Warning: sky clearness (= %.3f) too high, printing error sky\n",
-                         epsilon);
-                    return errorSky();
-                }
+                if (clearnessTooHigh) return errorSky();
                 const double kb = directEfficacy();
                 directNormal = kb < 0.1 ? 0 : directIlluminance / kb;
                 delta = brightness(diffuse);

@@ -12,7 +12,6 @@
 #include <iostream>
 #include <random>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -158,12 +157,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     } catch (const rt::Error& e) {
-        // Radiance's vwrays prints setview()'s message as it is, without the
-        // "bad view: " that rvimage's fatal errors carry.
-        std::string_view message = e.what();
-        constexpr std::string_view kViewPrefix = "bad view: ";
-        if (message.substr(0, kViewPrefix.size()) == kViewPrefix) message.remove_prefix(kViewPrefix.size());
-        std::fprintf(stderr, "%s: %.*s\n", progname, static_cast<int>(message.size()), message.data());
+        std::fprintf(stderr, "%s: %s\n", progname, e.what());
         return e.ExitCode();
     }
     return 0;

@@ -274,7 +274,8 @@ PreparedView SetupView(const View& view) {
     PreparedView pv;
     pv.view = view;
     View& v = pv.view;
-    auto fail = [](const std::string& message) { ThrowUserError("bad view: " + message); };
+    // Radiance's setview() messages as they are; rvimage says "bad view: ".
+    auto fail = [](const std::string& message) { ThrowUserError(message); };
     if (v.va < -kTiny || (v.va > kTiny && v.va <= v.vo))
         fail("illegal fore/aft clipping plane");
     pv.vdist = NormalizeLikeRadiance(v.vd);
