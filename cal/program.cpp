@@ -184,6 +184,17 @@ void Program::DefineBrdfVariables() {
     LoadText(text, "<BRDF variables>");
 }
 
+void Program::DefineRedirectVariables() {
+    if (redirectVariables_) return;
+    redirectVariables_ = true;
+    std::string text;
+    for (int i = 0; i < kRedirectChannelCount - kBrdfChannelCount; ++i) {
+        text += std::string(kRedirectVariableNames[static_cast<std::size_t>(i)]) + " = $" +
+                std::to_string(kBrdfChannelCount + i + 1) + ";\n";
+    }
+    LoadText(text, "<prism variables>");
+}
+
 void Program::LoadRayinit(const SearchPath& path) {
     const std::optional<SourceText> source = FindFunctionFile("rayinit.cal", path);
     if (!source) ThrowSystemError("cannot find function file \"rayinit.cal\"");

@@ -95,6 +95,11 @@ class Program {
     /// first such material loads (before it, as in Radiance, they are
     /// undefined). Needs Options::channelCount >= kBrdfChannelCount.
     void DefineBrdfVariables();
+    /// The variables a prism1/prism2 function reads besides the ray's:
+    /// DxA = $35 … DzA = $37 (kRedirectChannelCount), defined once, when the
+    /// first such material loads. Needs Options::channelCount >=
+    /// kRedirectChannelCount.
+    void DefineRedirectVariables();
     /// rayinit.cal from `path` (RAYPATH, else lazyrad's built-in one) into the
     /// global context.
     void LoadRayinit(const SearchPath& path);
@@ -150,6 +155,7 @@ class Program {
     std::unordered_map<std::string, std::int32_t> nameIndex_;  // into code_.names
     std::set<std::string> loadedContexts_;
     bool brdfVariables_ = false;
+    bool redirectVariables_ = false;
     std::uint64_t generation_ = 1;
 };
 

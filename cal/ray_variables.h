@@ -27,11 +27,15 @@ enum RayChannel : int {
     kNxP, kNyP, kNzP,      // perturbed normal, in function space / S
     kRdotP,                // perturbed cosine, in [-1, 1]
     kCrP, kCgP, kCbP,      // material colour times pattern colour
+    // Set only while a prism1/prism2 function is evaluated (m_direct.c):
+    kDxA, kDyA, kDzA,      // unit direction to the source aimed at, in function space / S;
+                           // 0 0 0 when the ray aims at none
 };
 // clang-format on
 
 inline constexpr int kRayChannelCount = 27;
 inline constexpr int kBrdfChannelCount = 34;
+inline constexpr int kRedirectChannelCount = 37;
 
 inline constexpr std::array<const char*, kRayChannelCount> kRayVariableNames = {
     "Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "T",  "Rdot", "S",  "Tx", "Ty",
@@ -39,5 +43,8 @@ inline constexpr std::array<const char*, kRayChannelCount> kRayVariableNames = {
 
 inline constexpr std::array<const char*, kBrdfChannelCount - kRayChannelCount> kBrdfVariableNames = {
     "NxP", "NyP", "NzP", "RdotP", "CrP", "CgP", "CbP"};
+
+inline constexpr std::array<const char*, kRedirectChannelCount - kBrdfChannelCount>
+    kRedirectVariableNames = {"DxA", "DyA", "DzA"};
 
 }  // namespace rt::cal

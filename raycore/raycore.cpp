@@ -104,6 +104,11 @@ bool MaterialTransmits(const Scene& scene, int material, int depth) {
         case MaterialType::Light:
         case MaterialType::Glow:
         case MaterialType::Spotlight:
+        // A shadow ray meeting a prism is black unless it aims at the
+        // prism's own image of a source, which shading/ follows from the
+        // prism on (m_direct.c).
+        case MaterialType::Prism1:
+        case MaterialType::Prism2:
             return false;
     }
     return true;

@@ -52,6 +52,7 @@ enum class MaterialFunction {
     BrdfData,     // plasdata, metdata, transdata: `func datafile funcfile x1…xn [xf]`
     Brtd,         // BRTDfunc: six expressions, three functions, `funcfile [xf]`
     Bsdf,         // BSDF: `thick xmlfile ux uy uz funcfile [xf]`; aBSDF without thick
+    Redirect,     // prism1: `coef dx dy dz funcfile [xf]`; prism2: two such quadruples
 };
 
 struct MaterialSpec {
@@ -96,6 +97,9 @@ constexpr MaterialSpec kMaterialSpecs[] = {
     // Its strings are light source names (resolved in shading/); m_mist.c
     // reads up to seven reals, as many as there are.
     {"mist", MaterialType::Mist, 0, 7, kAnyCount},
+    // All their reals are the function's arguments.
+    {"prism1", MaterialType::Prism1, 0, kAnyCount, 0, MaterialFunction::Redirect},
+    {"prism2", MaterialType::Prism2, 0, kAnyCount, 0, MaterialFunction::Redirect},
 };
 
 /// Radiance's MAXSLIST: the most light sources one mist may name.
@@ -179,6 +183,12 @@ constexpr PatternSpec kBrdfDataSpec = {"brdfdata", PatternType::Brdf, ModifierKi
                                        0, -1, 1, 1, false, true};
 constexpr PatternSpec kBrtdSpec = {"brtd", PatternType::Brtd, ModifierKind::Pattern, 0, 6, 3,
                                    0, false, false, true};
+
+/// prism1's coefficient and direction, prism2's two of each.
+constexpr PatternSpec kRedirect1Spec = {"prism1", PatternType::Redirect, ModifierKind::Texture,
+                                        0, 4};
+constexpr PatternSpec kRedirect2Spec = {"prism2", PatternType::Redirect, ModifierKind::Texture,
+                                        0, 8};
 
 const PatternSpec* FindPatternSpec(const std::string& type) {
     for (const PatternSpec& spec : kPatternSpecs) {
@@ -406,7 +416,8 @@ private:
     cal::Program& Functions() {
         if (!functions_) {
             cal::Options options;
-            options.channelCount = cal::kBrdfChannelCount;  // $28… for BRDF materials
+            // $28… for BRDF materials, $35… for prisms
+            options.channelCount = cal::kRedirectChannelCount;
             functions_ = std::make_shared<cal::Program>(options, warn_);
             functions_->DefineRayVariables();
             functions_->LoadRayinit(searchPath_);
@@ -624,6 +635,11 @@ private:
             // m_bsdf.c's check, at the first ray there; here when loading.
             const std::size_t strings = spec->type == MaterialType::Bsdf ? 6 : 5;
             if (object.sargs.size() < strings || nreals > 9 || nreals % 3 != 0) BadArgs(object);
+        } else if (spec->function == MaterialFunction::Redirect) {
+            // getfunc()'s check (Radiance makes it at the first ray or
+            // virtual source; here when loading).
+            const std::size_t strings = spec->type == MaterialType::Prism1 ? 5 : 9;
+            if (object.sargs.size() < strings) Fail(object, "too few string arguments");
         } else if (spec->function == MaterialFunction::Orientation) {
             // Radiance's own words for these (m_aniso.c, getfunc()).
             if (nreals < spec->minReals || nreals > spec->maxReals) {
@@ -666,6 +682,12 @@ private:
             material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (spec->function == MaterialFunction::Bsdf) {
             SetBsdf(object, material);
+        } else if (spec->function == MaterialFunction::Redirect) {
+            // DxA… the function may read, before its file.
+            Functions().DefineRedirectVariables();
+            scene_.patterns.push_back(MakePattern(
+                object, spec->type == MaterialType::Prism1 ? kRedirect1Spec : kRedirect2Spec));
+            material.function = static_cast<int>(scene_.patterns.size()) - 1;
         } else if (spec->function != MaterialFunction::None) {
             // The BRDF variables the function may read, before its file.
             Functions().DefineBrdfVariables();

@@ -46,6 +46,8 @@ const char* MaterialTypeName(MaterialType type) {
         case MaterialType::Bsdf: return "BSDF";
         case MaterialType::ABsdf: return "aBSDF";
         case MaterialType::Mist: return "mist";
+        case MaterialType::Prism1: return "prism1";
+        case MaterialType::Prism2: return "prism2";
     }
     return "unknown";
 }
@@ -86,6 +88,8 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
         if (a.size() >= 9) p.diffuseTransmission = Rgb(a[6], a[7], a[8]);
         return p;
     }
+    if (type == MaterialType::Prism1) return PrismParams{1};
+    if (type == MaterialType::Prism2) return PrismParams{2};
     const Rgb color(a[0], a[1], a[2]);
     switch (type) {
         case MaterialType::Plastic:
@@ -118,7 +122,9 @@ MaterialParams MakeMaterialParams(MaterialType type, const std::vector<double>& 
             return AshikParams{color, Rgb(a[3], a[4], a[5]), a[6], a[7]};
         case MaterialType::Bsdf:
         case MaterialType::ABsdf:
-        case MaterialType::Mist: break;  // above
+        case MaterialType::Mist:
+        case MaterialType::Prism1:
+        case MaterialType::Prism2: break;  // above
     }
     return NormalParams{};
 }

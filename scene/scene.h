@@ -50,9 +50,9 @@ enum class MaterialType {
     Plastic, Metal, Trans, Light, Illum, Glow, Spotlight, Mirror, Glass, Dielectric, Interface,
     Plastic2, Metal2, Trans2,
     PlasFunc, MetFunc, TransFunc, PlasData, MetData, TransData, BRTDFunc, Antimatter, Ashik2,
-    Bsdf, ABsdf, Mist
+    Bsdf, ABsdf, Mist, Prism1, Prism2
 };
-inline constexpr std::size_t kMaterialTypeCount = 26;
+inline constexpr std::size_t kMaterialTypeCount = 28;
 
 // Each material's real arguments by name, read once at load time
 // (radiance-notes.md §2.6). Colours are reflectances or transmittances in
@@ -153,9 +153,15 @@ struct MistParams {
     /// against the scene's light sources when shading is set up.
     std::vector<std::string> sourceNames;
 };
+/// prism1, prism2 (m_direct.c): light redirected by the material's function
+/// (Material::function) into `projections` directions, each with its own
+/// coefficient; all the reals are the function's arguments A1….
+struct PrismParams {
+    int projections = 1;
+};
 using MaterialParams = std::variant<NormalParams, LightParams, MirrorParams, GlassParams,
                                     DielectricParams, AnisoParams, BrdfParams, BrtdParams,
-                                    ClipParams, AshikParams, BsdfParams, MistParams>;
+                                    ClipParams, AshikParams, BsdfParams, MistParams, PrismParams>;
 
 /// The named parameters of a material of `type` from its real arguments, whose
 /// count the caller has checked against radiance-notes.md §2.6.
@@ -199,6 +205,8 @@ struct Material {
     /// -1 for a name starting with '0': zero, as in Radiance). BSDF: `thick
     /// ux uy uz funcfile [xf]` (the file's name left out), aBSDF `ux uy uz
     /// funcfile [xf]` (PatternType::Orientation, four or three values).
+    /// prism1 `coef dx dy dz funcfile [xf]`, prism2 the same twice before
+    /// the file (PatternType::Redirect, four or eight values).
     int function = -1;
     FileLoc loc;
 };
@@ -209,6 +217,7 @@ enum class PatternType {
     Orientation,  // an anisotropic material's u direction: a vector, turned as a texture's
     Brdf,         // a BRDF material's function, with or without data
     Brtd,         // BRTDfunc's six expressions and three functions (one per channel)
+    Redirect,     // prism1/prism2: per direction a coefficient and a vector (4 or 8 values)
 };
 
 /// What a function modifier does to a ray (radiance-functions.md §11.1).

@@ -91,9 +91,9 @@ void DirectLight::CountAim(ThreadState& ts, int source, bool hit) const {
 }
 
 Rgb DirectLight::RelayValue(ThreadState& ts, TracedRay& sray, int source) const {
-    // The ray must meet the relay itself; the relay (ShadeMirror) reflects it
-    // toward the source it images and follows it there, past whatever
-    // transmits and stopped by anything opaque.
+    // The ray must meet the relay itself; the relay (ShadeMirror, ShadePrism)
+    // reflects or redirects it toward the source it images and follows it
+    // there, past whatever transmits and stopped by anything opaque.
     auto hit = s_.core.IntersectSurface(s_.sources[source].relay, sray.org, sray.dir);
     if (!hit) return Rgb();
     sray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
@@ -195,7 +195,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         Rgb value;
         double distance = s.distance;
         if (src.IsVirtual()) {
-            // An image in a mirror: its light comes through the relay (srcvalue()).
+            // An image in a mirror or prism: its light comes through the relay (srcvalue()).
             TracedRay sray;
             tree_.StartChild(ts, sray, ray, kShadowRay, nullptr);
             sray.dir = s.dir;

@@ -35,7 +35,7 @@ private:
     /// `source`, whose sample point lies `distance` away.
     Rgb SourceValue(ThreadState& ts, TracedRay& sray, int source, double distance) const;
     /// srcvalue() for a virtual `source`: radiance arriving along `sray`
-    /// through the mirror that relays it (black if the ray misses the mirror).
+    /// through the mirror or prism that relays it (black if the ray misses it).
     Rgb RelayValue(ThreadState& ts, TracedRay& sray, int source) const;
 
     const ShadingSetup& s_;

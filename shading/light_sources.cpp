@@ -293,12 +293,21 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
 
 namespace {
 
-/// A mirror's plane: unit normal n and offset od, Dot(n, p) == od on it.
-struct MirrorPlane {
+/// A relay's plane: unit normal n and offset od, Dot(n, p) == od on it.
+struct Plane {
     Vec3 n;
     double od = 0;
-    Vec3 Point(const Vec3& p) const { return p - n * (2.0 * (Dot(n, p) - od)); }
-    Vec3 Vector(const Vec3& v) const { return v - n * (2.0 * Dot(n, v)); }
+};
+
+/// The map a relay makes of space (Radiance's MAT4 from mirrorproj() or
+/// dir_proj()): p -> p + g·(n·p − od), a shear along g of the points off
+/// the plane, which g = −2n makes a reflection in it.
+struct Projection {
+    Plane plane;
+    Vec3 g;
+    bool mirror = false;  // g = −2n: lengths and angles kept
+    Vec3 Point(const Vec3& p) const { return p + g * (Dot(plane.n, p) - plane.od); }
+    Vec3 Vector(const Vec3& v) const { return v + g * Dot(plane.n, v); }
 };
 
 /// A relay surface: its plane and Radiance's bounding disc (fgetmaxdisk,
@@ -307,7 +316,9 @@ struct MirrorPlane {
 /// radius).
 struct Relay {
     int surface = -1;
-    MirrorPlane plane;
+    int projections = 1;  // prism2: 2
+    bool prism = false;
+    Plane plane;
     Vec3 centre;
     double radius2 = 0;
 };
@@ -334,25 +345,72 @@ bool MakeRelay(const Surface& s, int index, Relay& out) {
     return false;
 }
 
-/// Radiance's mirrorproj() and makevsrc(): the image of `src` in `relay`,
-/// or false when there is none.
-bool MakeImage(const LightSource& src, int sn, const Relay& relay, LightSource& image) {
-    const MirrorPlane& m = relay.plane;
-    const bool distant = src.shape == LightSource::Shape::Distant;
-    // mirrorproj(): the source must lie in front of the mirror.
-    if (distant ? Dot(src.location, m.n) <= kFtiny
-                : Dot(src.location, m.n) <= m.od + kFtiny) {
+/// Radiance's mirrorproj(): a mirror's reflection, for a source in front of it.
+bool MirrorProjection(const LightSource& src, const Relay& relay, Projection& out) {
+    const Plane& m = relay.plane;
+    if (src.shape == LightSource::Shape::Distant ? Dot(src.location, m.n) <= kFtiny
+                                                 : Dot(src.location, m.n) <= m.od + kFtiny) {
         return false;
     }
+    out.plane = m;
+    out.g = m.n * -2.0;
+    out.mirror = true;
+    return true;
+}
+
+/// Radiance's dir_proj(): prism `relay`'s redirection `n` of the light from
+/// `src` toward the centre of its disc, as a shear (and a reflection when the
+/// light leaves on the side it came from). False when that ray misses the
+/// prism, meets its plane at a grazing angle, leaves along it, or the
+/// function gives it no weight.
+bool PrismProjection(const LightSource& src, const Relay& relay, int n,
+                     const RedirectionProbe& probe, Projection& out) {
+    Vec3 org, dir;
+    if (src.shape == LightSource::Shape::Distant) {
+        dir = -src.location;
+        org = relay.centre - dir;
+    } else {
+        org = src.location;
+        dir = relay.centre - src.location;
+        const double d = Length(dir);
+        if (d == 0) return false;  // at the source
+        dir *= 1.0 / d;
+    }
+    const Plane& plane = relay.plane;
+    const double oldDot = Dot(dir, plane.n);
+    if (std::fabs(oldDot) <= kFtiny) return false;
+    const std::optional<Vec3> newDir = probe(relay.surface, n, org, dir);
+    if (!newDir) return false;
+    const double newDot = Dot(*newDir, plane.n);
+    if (std::fabs(newDot) <= kFtiny) return false;
+    out.plane = plane;
+    out.g = *newDir / newDot - dir / oldDot;
+    if ((newDot > 0.0) != (oldDot > 0.0)) out.g -= plane.n * 2.0;  // back the way it came
+    out.mirror = false;
+    return true;
+}
+
+/// Radiance's makevsrc(): the image of `src` under `m`, relayed by `relay`,
+/// or false when there is none.
+bool MakeImage(const LightSource& src, int sn, const Relay& relay, const Projection& m,
+               int projection, LightSource& image) {
+    const bool distant = src.shape == LightSource::Shape::Distant;
     if (relay.radius2 <= kFtiny) return false;  // too small
     image = src;
     image.relay = relay.surface;
+    image.relayProjection = projection;
     image.next = sn;
     image.surface = relay.surface;
-    // A spotlight's image is a spotlight aimed at the mirrored direction,
-    // its focal distance counted from the image.
+    // A spotlight's image is a spotlight aimed at the projected direction,
+    // its focal distance counted from the image. A shear changes lengths:
+    // the normal and aim are made unit again, the size vectors keep what it
+    // makes of them (the area stays the source's, as in Radiance).
     image.spotAim = m.Vector(src.spotAim);
     image.normal = m.Vector(src.normal);
+    if (!m.mirror) {
+        if (src.spot) image.spotAim = Normalize(image.spotAim);
+        if (src.shape == LightSource::Shape::Flat) image.normal = Normalize(image.normal);
+    }
     for (Vec3& v : image.size) v = m.Vector(v);
     if (distant) {
         image.location = Normalize(m.Vector(src.location));
@@ -398,16 +456,23 @@ constexpr int kMaxRelays = 100;
 /// relay but its own, and theirs, `depth` reflections deep. False when
 /// `limit` stopped it.
 bool AddImages(const std::vector<Relay>& relays, int sn, int depth, std::size_t limit,
-               std::vector<LightSource>& sources) {
+               const RedirectionProbe& probe, std::vector<LightSource>& sources) {
     if (depth <= 0 || sources[sn].skip) return true;
     for (const Relay& relay : relays) {
         if (relay.surface == sources[sn].surface) continue;  // cannot image itself
-        LightSource image;
-        if (!MakeImage(sources[sn], sn, relay, image)) continue;
-        if (sources.size() >= limit) return false;
-        sources.push_back(image);
-        const int made = static_cast<int>(sources.size()) - 1;
-        if (!AddImages(relays, made, depth - 1, limit, sources)) return false;
+        for (int n = 0; n < relay.projections; ++n) {
+            Projection m;
+            if (relay.prism ? !PrismProjection(sources[sn], relay, n, probe, m)
+                            : !MirrorProjection(sources[sn], relay, m)) {
+                continue;
+            }
+            LightSource image;
+            if (!MakeImage(sources[sn], sn, relay, m, n, image)) continue;
+            if (sources.size() >= limit) return false;
+            sources.push_back(image);
+            const int made = static_cast<int>(sources.size()) - 1;
+            if (!AddImages(relays, made, depth - 1, limit, probe, sources)) return false;
+        }
     }
     return true;
 }
@@ -415,13 +480,19 @@ bool AddImages(const std::vector<Relay>& relays, int sn, int depth, std::size_t 
 }  // namespace
 
 void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
-                       std::vector<LightSource>& sources) {
+                       const RedirectionProbe& probe, std::vector<LightSource>& sources) {
     if (relays <= 0) return;
     std::vector<Relay> mirrors;
     for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
         const Surface& s = scene.surfaces[i];
-        if (s.material < 0 || scene.materials[s.material].type != MaterialType::Mirror) continue;
+        if (s.material < 0) continue;
+        const Material& material = scene.materials[s.material];
+        const bool prism =
+            material.type == MaterialType::Prism1 || material.type == MaterialType::Prism2;
+        if (material.type != MaterialType::Mirror && !prism) continue;
         Relay relay;
+        relay.prism = prism;
+        if (prism) relay.projections = std::get<PrismParams>(material.params).projections;
         if (MakeRelay(s, i, relay)) {
             mirrors.push_back(relay);
         } else if (s.type != SurfaceType::Polygon && warn) {
@@ -437,7 +508,7 @@ void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
     const auto fits = [&](int depth) {
         sources.resize(real);
         for (int sn = static_cast<int>(real) - 1; sn >= 0; --sn) {
-            if (!AddImages(mirrors, sn, depth, real + kMaxImages, sources)) return false;
+            if (!AddImages(mirrors, sn, depth, real + kMaxImages, probe, sources)) return false;
         }
         return true;
     };

@@ -5,6 +5,8 @@
 // jitter with -dj); radiance-notes.md §3.1–3.2.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/diagnostics.h"
@@ -39,13 +41,15 @@ struct LightSource {
     bool patterned = false;      // its radiance comes through patterns, per sample ray
 
     // Virtual sources (-dr, Radiance's SVIRTUAL): the image of source `next`
-    // in the planar mirror `relay`. Its geometry above is the mirrored
-    // geometry of `next`; its light reaches a point only along rays through
-    // the relay surface, which reflects them toward `next`. For a local image
+    // in the planar mirror or prism `relay`. Its geometry above is the
+    // geometry of `next` mirrored (or, by a prism, sheared and maybe
+    // mirrored); its light reaches a point only along rays through the relay
+    // surface, which reflects or redirects them toward `next`. For a local image
     // those rays leave it within the cone `relayCone` (sr) around `relayAim`
     // (unit, from the image toward the relay's bounding disc); for a distant
     // image they pass within √relayRadius2 of `relayCentre`.
     int relay = -1;              // surface index of the mirror; -1 for a real source
+    int relayProjection = 0;     // which of a prism2's two redirections (Radiance's pn)
     int next = -1;               // the source this one images (Radiance's sa.sv.sn)
     Vec3 relayAim;
     double relayCone = 0;
@@ -70,8 +74,18 @@ struct SourceSample {
 std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink& warn,
                                           bool randomFrames, Rng& rng);
 
+/// For a prism's images (Radiance's dir_proj()): the new direction (render
+/// space, not unit) that prism surface `surface`'s redirection `n` gives the
+/// ray from `org` along unit `dir`, if the ray meets the surface and the
+/// coefficient there is above FTINY. shading/ answers it with the ray core
+/// and the prism's function.
+using RedirectionProbe =
+    std::function<std::optional<Vec3>(int surface, int n, const Vec3& org, const Vec3& dir)>;
+
 /// Radiance's markvirtuals() for -dr `relays` > 0: appends the images of
-/// `sources` in every top-level planar mirror (polygon or ring), and their
+/// `sources` in every top-level planar mirror and prism (polygon or ring):
+/// a mirror's reflections, a prism's redirections as `probe` finds them
+/// toward the centre of its disc, one image per redirection; and their
 /// images in turn up to `relays` reflections deep, depth first from the last
 /// source as Radiance orders them. A mirror never images the source it
 /// relays itself; a source behind a mirror's plane, a relay disc behind a
@@ -83,7 +97,7 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
 /// (-dp) is not needed: an image whose relay cannot see its source
 /// contributes nothing, as there.
 void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
-                       std::vector<LightSource>& sources);
+                       const RedirectionProbe& probe, std::vector<LightSource>& sources);
 
 /// Radiance's nextssamp() + srcray() over all sources: the samples seen from
 /// `point` by a ray of weight `rayWeight`, in source order then partition order.

@@ -127,6 +127,26 @@ private:
     Rgb color_;
 };
 
+/// A prism's channels: the ray's, then DxA… (m_direct.c's varset()).
+class RedirectChannels final : public cal::ChannelSource {
+public:
+    RedirectChannels(const TracedRay& ray, const PatternSpace& space, const Vec3& sourceDir)
+        : ray_(ray, space),
+          sourceDir_(space.PatternFromRender().Vector(sourceDir) / space.PatternFromRender().scale) {}
+
+    double Channel(int n) const override {
+        using namespace cal;
+        switch (n) {
+            case kDxA: case kDyA: case kDzA: return sourceDir_[n - kDxA];
+            default: return ray_.Channel(n);
+        }
+    }
+
+private:
+    PatternChannels ray_;
+    Vec3 sourceDir_;
+};
+
 /// Radiance's rayshade() from some modifier on: true if a material shaded the ray.
 bool ShadeChain(const RayTree& tree, ThreadState& ts, TracedRay& ray, const ModifierChain& chain) {
     if (tree.ApplyModifiers(ts, ray, chain.modifiers)) return true;
@@ -330,6 +350,35 @@ std::optional<Rgb> EvaluateBrdfColour(const Scene& scene, ThreadState& ts, const
     }
     if (context.mathError() != cal::MathError::None) return std::nullopt;
     return value;
+}
+
+Redirection EvaluateRedirection(const Scene& scene, cal::Context& context, const TracedRay& ray,
+                                int index, int n, const Vec3& sourceDir) {
+    const cal::Program& functions = *scene.functions;
+    const Pattern& prism = scene.patterns[static_cast<std::size_t>(index)];
+    const PatternSpace space(ray, prism);
+    const RedirectChannels channels(ray, space, sourceDir);
+    context.SetChannels(&channels);
+    context.SetArguments(prism.args, prism.owner);
+    context.NextEvaluation();
+    Redirection r;
+    const std::size_t first = static_cast<std::size_t>(4 * n);
+    r.coefficient = functions.Evaluate(prism.values[first], context);
+    if (context.mathError() != cal::MathError::None) {
+        r.outcome = Redirection::Outcome::MathError;
+    } else if (r.coefficient > kFtiny) {
+        double v[3];
+        for (std::size_t k = 0; k < 3; ++k) v[k] = functions.Evaluate(prism.values[first + 1 + k], context);
+        if (context.mathError() != cal::MathError::None) {
+            r.outcome = Redirection::Outcome::MathError;
+        } else {
+            // The function's transform, then the instance's (m_direct.c).
+            r.dir = space.RenderFromPattern().Vector(Vec3(v[0], v[1], v[2]));
+            r.outcome = Redirection::Outcome::Redirected;
+        }
+    }
+    context.SetChannels(nullptr);
+    return r;
 }
 
 namespace {

@@ -62,4 +62,21 @@ std::optional<Rgb> EvaluateBrdf(const Scene& scene, ThreadState& ts, const Trace
 std::optional<Rgb> EvaluateBrdfColour(const Scene& scene, ThreadState& ts, const TracedRay& ray,
                                       int index, const BrdfInputs& in, int first);
 
+/// One of a prism's redirections (m_direct.c's redirect() and dir_proj()).
+struct Redirection {
+    enum class Outcome { Redirected, Insignificant, MathError };
+    Outcome outcome = Outcome::Insignificant;
+    double coefficient = 0;  // the coefficient expression's value
+    Vec3 dir;                // new direction, render space, not normalised
+};
+
+/// prism1/prism2 function `index` (Scene::patterns, PatternType::Redirect),
+/// redirection `n` (0 or 1), for this ray, with DxA… the unit render-space
+/// `sourceDir` in the function's space (zero: the ray aims at no source).
+/// As Radiance: the coefficient first, Insignificant at or below FTINY
+/// (the direction then not evaluated), MathError after one in either.
+/// `context` is the caller's (a thread's, or the source set-up's own).
+Redirection EvaluateRedirection(const Scene& scene, cal::Context& context, const TracedRay& ray,
+                                int index, int n, const Vec3& sourceDir);
+
 }  // namespace rt

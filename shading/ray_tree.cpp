@@ -65,7 +65,10 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
         child.rmax = parent.rmax > 0 ? parent.rmax - parent.rot : 0;
     }
     if (child.rweight <= 0) return false;
-    if (type == kShadowRay) return true;
+    // A shadow ray and everything it spawns go on whatever their weight,
+    // neither cut nor put to Russian roulette (rayorigin()'s "shadow
+    // commitment"): the source's light must arrive whole or not at all.
+    if (child.crtype & kShadowRay) return true;
     const int lr = s_.shading.limits.reflections;
     const double lw = s_.shading.limits.weight;
     if (lr <= 0 && coef) {
@@ -252,8 +255,8 @@ void RayTree::PassThrough(ThreadState& ts, TracedRay& ray,
 void RayTree::PassThrough(ThreadState& ts, TracedRay& ray, const Medium& beyond) const {
     TracedRay child;
     // Unlike raytrans(), m_mist.c stops a ray whose weight the medium
-    // brought below -lw (shadow rays are always followed).
-    if (!StartChild(ts, child, ray, kTransRay, nullptr) && !(ray.crtype & kShadowRay)) return;
+    // brought below -lw (StartChild follows shadow rays whatever it).
+    if (!StartChild(ts, child, ray, kTransRay, nullptr)) return;
     child.medium = &beyond;
     Continue(ts, ray, child);
 }

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "scene/reader.h"
+#include "shading/patterns.h"
 
 namespace rt {
 namespace {
@@ -57,6 +58,31 @@ std::vector<int> MistSourceList(const Scene& scene, const std::vector<LightSourc
     return list;
 }
 
+/// Radiance's dir_proj() test of a prism: the ray from a source toward the
+/// prism's disc must meet it, and the prism's function then gives the
+/// redirection (DxA… zero), warning after a math error.
+RedirectionProbe PrismProbe(const Scene& scene, const RayCore& core, const WarningSink& warn) {
+    if (!scene.functions) return {};
+    auto context = std::make_shared<cal::Context>(*scene.functions);
+    return [&scene, &core, warn, context](int surface, int n, const Vec3& org,
+                                          const Vec3& dir) -> std::optional<Vec3> {
+        const auto hit = core.IntersectSurface(surface, org, dir);
+        if (!hit) return std::nullopt;
+        TracedRay ray;
+        ray.org = org;
+        ray.dir = dir;
+        ray.SetHit(*hit, nullptr);
+        const Material& m = scene.materials[scene.surfaces[surface].material];
+        const Redirection r = EvaluateRedirection(scene, *context, ray, m.function, n, Vec3());
+        if (r.outcome == Redirection::Outcome::MathError && warn) {
+            warn("projection compute error for " + std::string(MaterialTypeName(m.type)) +
+                 " \"" + m.name + "\"");
+        }
+        if (r.outcome != Redirection::Outcome::Redirected) return std::nullopt;
+        return r.dir;
+    };
+}
+
 }  // namespace
 
 ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
@@ -89,7 +115,8 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
     };
     Rng frameRng(MixSeed(shading.seed, 0x5eed5eedULL));
     sources = FindLightSources(scene, sourceWarn, shading.uncorrelated, frameRng);
-    AddVirtualSources(scene, shading.direct.relays, sourceWarn, sources);
+    AddVirtualSources(scene, shading.direct.relays, sourceWarn, PrismProbe(scene, core, warn),
+                      sources);
 
     ambientList.insert(ambient.modifierList.begin(), ambient.modifierList.end());
 

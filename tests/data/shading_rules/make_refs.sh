@@ -21,6 +21,11 @@
 # 60 random rays in the cornell box inside a global medium (-me .05 -ma .8
 # -mg .5): Radiance divides the lamp for the shadow rays' weight, which the
 # viewing ray's path through the medium lowers.
+#
+# Golden.ShadowRaysAreNeverCut: a sensor lit through a glass pane at the
+# default limits, with -lw .95 -lr 10 (the transmitted shadow ray's weight,
+# .88, below -lw) and with -lw .95 -lr -10 (Russian roulette): Radiance
+# follows a shadow ray and its children whatever their weight.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
@@ -46,3 +51,7 @@ done
 (cd "$here/../../../scenes/cornell" && "$rad/bin/oconv" cornell.rad > "$tmp/cornell.oct" &&
     "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -me .05 .05 .05 -ma .8 .8 .8 -mg .5 -ov \
         "$tmp/cornell.oct" < "$here/medium_rays.txt" > "$here/medium_ov.txt")
+"$rad/bin/oconv" shadow_commitment.rad > "$tmp/commit.oct"
+for limits in "" "-lw .95 -lr 10" "-lw .95 -lr -10"; do
+    echo "0 0 0 0 0 1" | "$rad/bin/rtrace" -h -I -ab 0 $limits "$tmp/commit.oct"
+done > shadow_commitment.txt
