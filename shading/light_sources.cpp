@@ -479,6 +479,14 @@ bool AddImages(const std::vector<Relay>& relays, int sn, int depth, std::size_t 
 
 }  // namespace
 
+const Material& RelayMaterial(const Scene& scene, const Surface& surface) {
+    const Material& m = scene.materials[static_cast<std::size_t>(surface.material)];
+    if (m.type == MaterialType::Illum && m.alternate >= 0) {
+        return scene.materials[static_cast<std::size_t>(m.alternate)];
+    }
+    return m;
+}
+
 void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
                        const RedirectionProbe& probe, std::vector<LightSource>& sources) {
     if (relays <= 0) return;
@@ -486,7 +494,7 @@ void AddVirtualSources(const Scene& scene, int relays, const WarningSink& warn,
     for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
         const Surface& s = scene.surfaces[i];
         if (s.material < 0) continue;
-        const Material& material = scene.materials[s.material];
+        const Material& material = RelayMaterial(scene, s);
         const bool prism =
             material.type == MaterialType::Prism1 || material.type == MaterialType::Prism2;
         if (material.type != MaterialType::Mirror && !prism) continue;

@@ -74,6 +74,10 @@ struct SourceSample {
 std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink& warn,
                                           bool randomFrames, Rng& rng);
 
+/// Radiance's vsmaterial(): the material `surface` (which has one) relays
+/// light sources with, its own or, for an illum, its alternate.
+const Material& RelayMaterial(const Scene& scene, const Surface& surface);
+
 /// For a prism's images (Radiance's dir_proj()): the new direction (render
 /// space, not unit) that prism surface `surface`'s redirection `n` gives the
 /// ray from `org` along unit `dir`, if the ray meets the surface and the

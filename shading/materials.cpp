@@ -294,8 +294,11 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
                            (aimed.type == MaterialType::Illum || aimed.type == MaterialType::Glow);
         if (m.type != MaterialType::Illum || illumBlocks) return ignore();  // wrong source
     }
-    if (m.type == MaterialType::Illum && (ray.rsrc < 0 || aimedElsewhere)) {
-        // An illum not hit on purpose shows its alternate material, or nothing.
+    if (m.type == MaterialType::Illum &&
+        (ray.rsrc < 0 || aimedElsewhere || setup.sources[ray.rsrc].IsVirtual())) {
+        // An illum not hit on purpose shows its alternate material, or
+        // nothing; so does one hit by a shadow ray aimed at an image it
+        // relays as its alternate (a mirror or prism), which relays it.
         if (m.alternate >= 0) {
             tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
         } else {

@@ -72,7 +72,7 @@ RedirectionProbe PrismProbe(const Scene& scene, const RayCore& core, const Warni
         ray.org = org;
         ray.dir = dir;
         ray.SetHit(*hit, nullptr);
-        const Material& m = scene.materials[scene.surfaces[surface].material];
+        const Material& m = RelayMaterial(scene, scene.surfaces[surface]);
         const Redirection r = EvaluateRedirection(scene, *context, ray, m.function, n, Vec3());
         if (r.outcome == Redirection::Outcome::MathError && warn) {
             warn("projection compute error for " + std::string(MaterialTypeName(m.type)) +

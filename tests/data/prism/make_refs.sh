@@ -13,7 +13,8 @@
 # sun_mirror.rad: the same with a mirror wall, 192 sensors (sun_mirror.pts) at
 # -dr 1 and -dr 2, where the sun off the mirror through the prism (an image of
 # an image) lights 24 of them. All at -ab 0 -dj 0 -dt 0 -ss 0, where both
-# programs' answers are fixed.
+# programs' answers are fixed. sun_illum.rad: the panel an illum with the
+# prism2 as its alternate, which relays the sun as the prism does.
 # room_ab1.txt: the room's 96 floor sensors at -ab 1 -aa .1 -ad 1024 -as 256
 # -ar 64, whose mean the indirect test compares (Radiance's own mean moves by
 # about 0.2 % from one run of this script to the next: 0.13936-0.13974). room_inst.rad: the room with
@@ -40,6 +41,8 @@ for dr in 1 2; do
     "$rad/bin/rtrace" $fixed -dr $dr -I "$tmp/sun_mirror.oct" < sun_mirror.pts \
         > "sun_mirror_I_dr$dr.txt" 2>/dev/null
 done
+"$rad/bin/oconv" sun_illum.rad > "$tmp/sun_illum.oct"
+"$rad/bin/rtrace" $fixed -I "$tmp/sun_illum.oct" < sun.pts > sun_illum_I.txt 2>/dev/null
 head -96 room.pts | "$rad/bin/rtrace" -h -I -ab 1 -aa .1 -ad 1024 -as 256 -ar 64 "$tmp/room.oct" \
     > room_ab1.txt 2>/dev/null
 "$rad/bin/oconv" inst_panel.rad > inst_panel.oct

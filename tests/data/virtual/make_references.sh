@@ -33,3 +33,5 @@ run mirror_instance_dr2.txt mirror_instance -I -dr 2 < room.pts
 run shelf_bv.txt shelf -I -dr 2 -bv- < room.pts
 run relays_bv.txt relays -I -dr 2 -bv- < room.pts
 run tube_ds02.txt tube -I -dr 2 -ds .02 < room.pts
+run illum_mirror_dr2.txt illum_mirror -I -dr 2 < room.pts
+run illum_mirror_dr0.txt illum_mirror -I -dr 0 < room.pts
