@@ -4,7 +4,8 @@
     bench/dropin_sweep.py [--rtrace BIN] [--rays N] [--specs v,l,L,...]
                           [--options "-dt 0 -ss 0"] [--trace] [SCENE ...]
 
-For each shared scene (cornell, mixed, daylit, shelf, df, bsdf; default all)
+For each shared scene (cornell, mixed, daylit, shelf, df, bsdf; default all,
+with prism, tests/data/prism's room of prisms and a mirror)
 it casts N rays from random points of the room in random directions, at -ab 0
 -dj 0 -u- plus --options, once per output letter of --specs (default every
 letter that needs no trace mode), through both programs, and prints every
@@ -17,7 +18,8 @@ With --trace it compares -otvsL and -oTvsL ray trees instead, one process per
 ray: Radiance's obstructor cache leaves out shadow rays whose blocker it
 already knows, so there a tree passes when Radiance's lines are lazyrad's with
 only zero-valued lines left out (README, Differences, "Source obstructor
-cache").
+cache"). Radiance 5.4a crashes tracing in a scene whose prisms make images;
+such rays are counted apart.
 
 Known differences that remain (README, Differences): the coincident-surface
 rule, Monte Carlo in rough specular sampling unless -ss 0, and -dt's estimates
@@ -40,6 +42,8 @@ SCENES = {
     "shelf": ("shelf_room", "shelf_room.rad", (0.3, 5.7, 0.3, 5.7, 0.2, 2.5)),
     "df": ("df_room", "df_room.oct", (0.3, 4.7, 0.3, 5.7, 0.2, 2.7)),
     "bsdf": ("bsdf_room", "bsdf_room_sun.oct", (0.3, 4.7, 0.3, 5.7, 0.2, 2.7)),
+    # Prisms and a mirror (tests/data/prism): redirected rays and images.
+    "prism": ("../tests/data/prism", "room.rad", (0.3, 5.7, 0.3, 3.7, 0.3, 2.35)),
 }
 LETTERS = "o,d,v,l,L,c,p,n,N,s,m,M,r,x,R,X,~v"
 
@@ -132,13 +136,19 @@ def main():
             rays = random_rays(box, a.rays, 7)
             if a.trace:
                 for spec in ("-otvsL", "-oTvsL"):
-                    bad = 0
+                    bad = crashed = 0
                     for ray in rays.splitlines():
                         args = base + ["-dt", "0", "-ss", "0", spec, octree]
                         ra = run(os.path.join(RADIANCE, "bin", "rtrace"), args, cwd, ray + "\n", env)
+                        if not ra.strip():
+                            # Radiance 5.4a crashes tracing through images
+                            # a prism relays (README, Differences).
+                            crashed += 1
+                            continue
                         lz = run(rtrace, args, cwd, ray + "\n", env)
                         bad += not radiance_tree_within(ra, lz)
-                    print(f"{name} {spec}: {bad} of {a.rays} trees differ")
+                    print(f"{name} {spec}: {bad} of {a.rays - crashed} trees differ"
+                          f" (Radiance crashed on {crashed})")
                     failed |= bad > 0
                 continue
             for spec in a.specs.split(","):
