@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "cal/program.h"
 
+#include <span>
 #include <string>
 
 #include "cal/eval.h"
@@ -164,35 +165,34 @@ std::string Program::LoadFile(std::string_view name, const SearchPath& path,
     return context;
 }
 
-void Program::DefineRayVariables() {
+namespace {
+
+/// "name = $n;" for each of `names`, n counting from channel `first`.
+std::string ChannelDefinitions(std::span<const char* const> names, int first) {
     std::string text;
-    for (int i = 0; i < kRayChannelCount; ++i) {
-        text += std::string(kRayVariableNames[static_cast<std::size_t>(i)]) + " = $" +
-                std::to_string(i + 1) + ";\n";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        text += std::string(names[i]) + " = $" + std::to_string(first + static_cast<int>(i)) + ";\n";
     }
-    LoadText(text, "<ray variables>");
+    return text;
+}
+
+}  // namespace
+
+void Program::DefineRayVariables() {
+    LoadText(ChannelDefinitions(kRayVariableNames, 1), "<ray variables>");
 }
 
 void Program::DefineBrdfVariables() {
     if (brdfVariables_) return;
     brdfVariables_ = true;
-    std::string text;
-    for (int i = 0; i < kBrdfChannelCount - kRayChannelCount; ++i) {
-        text += std::string(kBrdfVariableNames[static_cast<std::size_t>(i)]) + " = $" +
-                std::to_string(kRayChannelCount + i + 1) + ";\n";
-    }
-    LoadText(text, "<BRDF variables>");
+    LoadText(ChannelDefinitions(kBrdfVariableNames, kRayChannelCount + 1), "<BRDF variables>");
 }
 
 void Program::DefineRedirectVariables() {
     if (redirectVariables_) return;
     redirectVariables_ = true;
-    std::string text;
-    for (int i = 0; i < kRedirectChannelCount - kBrdfChannelCount; ++i) {
-        text += std::string(kRedirectVariableNames[static_cast<std::size_t>(i)]) + " = $" +
-                std::to_string(kBrdfChannelCount + i + 1) + ";\n";
-    }
-    LoadText(text, "<prism variables>");
+    LoadText(ChannelDefinitions(kRedirectVariableNames, kBrdfChannelCount + 1),
+             "<prism variables>");
 }
 
 void Program::LoadRayinit(const SearchPath& path) {

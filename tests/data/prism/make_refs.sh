@@ -17,16 +17,13 @@
 # prism2 as its alternate, which relays the sun as the prism does.
 # room_ab1.txt: the room's 96 floor sensors at -ab 1 -aa .1 -ad 1024 -as 256
 # -ar 64, whose mean the indirect test compares (Radiance's own mean moves by
-# about 0.2 % from one run of this script to the next: 0.13936-0.13974). room_inst.rad: the room with
-# its panel as an octree instance (inst_panel.oct, made here and committed),
-# the floor sensors (-I) and the random rays (-ov).
+# about 0.2 % from one run of this script to the next: 0.13936-0.13974).
+# room_inst.rad: the room with its panel as an octree instance
+# (inst_panel.oct, made here and committed), the floor sensors (-I) and the
+# random rays (-ov).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-cd "$here"
+source "$here/../radiance_refs.sh"
 export RAYPATH=".:$rad/lib"
 "$rad/bin/oconv" room.rad > "$tmp/room.oct"
 "$rad/bin/oconv" sun.rad > "$tmp/sun.oct"

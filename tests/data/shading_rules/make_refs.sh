@@ -28,11 +28,7 @@
 # follows a shadow ray and its children whatever their weight.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-cd "$here"
+source "$here/../radiance_refs.sh"
 for bv in + -; do
     for scene in trans_view trans_rough_view; do
         "$rad/bin/oconv" "$scene.rad" > "$tmp/$scene.oct"
