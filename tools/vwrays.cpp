@@ -3,10 +3,12 @@
 // vwrays: the primary rays of a Radiance view, in scanline order (top row
 // first, left to right), as Radiance's src/util/vwrays.c writes them, ready for
 // `rtrace -x X -y Y`. Usage:
-//   vwrays [-i -u -f{a|f|d} -c rept -pa aspect -pj jitter | -d] -x X -y Y view-options
+//   vwrays [-i -u -f{a|f|d} -c rept -pa aspect -pj jitter -pd aperture | -d]
+//          -x X -y Y view-options
 // -d prints the resolution after pixel-aspect adjustment ("-x X -y Y -ld±").
-// -pj draws from a fixed-seed generator, so jittered runs repeat exactly.
+// -pj and -pd draw from a fixed-seed generator, so jittered runs repeat exactly.
 // Picture (and depth buffer) arguments of Radiance's vwrays are not supported.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/conventions.h"
 #include "core/error.h"
 #include "view/view.h"
 
@@ -43,10 +46,48 @@ void PutRay(Format format, const rt::Vec3& o, const rt::Vec3& d) {
 
 [[noreturn]] void Usage(const char* progname) {
     std::fprintf(stderr,
-                 "Usage: %s [ -i -u -f{a|f|d} -c rept -pa aspect -pj jitter | -d ] "
+                 "Usage: %s [ -i -u -f{a|f|d} -c rept -pa aspect -pj jitter -pd aperture | -d ] "
                  "-x X -y Y view-options\n",
                  progname);
     std::exit(1);
+}
+
+/// Depth of field, as Radiance 5.4a's jitteraperture(): the ray from
+/// `origin` along unit `dir` is moved to a uniformly random point of an
+/// aperture disc of diameter `aperture` (world units) in the image plane's
+/// directions, and aimed at the point the unmoved ray reaches at the focal
+/// distance |vd| (perspective: on the plane that far along vd). For the
+/// fisheye and cylindrical views the point also moves by up to ±π/8 of the
+/// aperture along vd, and the disc is in the plane vectors' own units
+/// where Radiance leaves them unnormalised. False when the new direction is
+/// zero (the point was the focus).
+bool JitterAperture(const rt::PreparedView& pv, double aperture, double u1, double u2, double u3,
+                    rt::Vec3& origin, rt::Vec3& dir) {
+    using rt::ViewType;
+    // A uniform point of the disc (not Radiance's concentric map, which
+    // draws other random numbers anyway: the same distribution).
+    const double r = 0.5 * aperture * std::sqrt(u1), phi = 2.0 * rt::kPi * u2;
+    double dh = r * std::cos(phi), dv = r * std::sin(phi);
+    const ViewType type = pv.view.type;
+    rt::Vec3 focus;
+    if (type == ViewType::Perspective || type == ViewType::Parallel) {
+        const double along = type == ViewType::Perspective ? 1.0 / rt::Dot(dir, pv.view.vd) : 1.0;
+        focus = pv.view.vp + dir * (along * pv.vdist);
+        origin += pv.hvec * (dh / std::sqrt(pv.hn2)) + pv.vvec * (dv / std::sqrt(pv.vn2));
+    } else {
+        const double forward = rt::kPi / 4.0 * aperture * (0.5 - u3);
+        if (type != ViewType::Angular && type != ViewType::Planisphere) {
+            if (type != ViewType::Cylindrical) dh /= std::sqrt(pv.hn2);
+            dv /= std::sqrt(pv.vn2);
+        }
+        focus = pv.view.vp + dir * pv.vdist;
+        origin += pv.hvec * dh + pv.vvec * dv + pv.view.vd * forward;
+    }
+    const rt::Vec3 toFocus = focus - origin;
+    const double length = rt::Length(toFocus);
+    if (length == 0.0) return false;
+    dir = toFocus / length;
+    return true;
 }
 
 int ParseResolution(const std::vector<std::string>& args, std::size_t& i, const char* progname,
@@ -69,7 +110,7 @@ int main(int argc, char** argv) {
     rt::View view;
     Format format = Format::Ascii;
     int xRes = 512, yRes = 512;
-    double pixelAspect = 1.0, jitter = 0.0;
+    double pixelAspect = 1.0, jitter = 0.0, aperture = 0.0;
     int repeat = 1;
     bool dimensionsOnly = false, fromStdin = false, unbuffered = false;
     try {
@@ -103,6 +144,8 @@ int main(int argc, char** argv) {
                 pixelAspect = std::atof(args[++i].c_str());
             } else if (a == "-pj" && i + 1 < args.size()) {
                 jitter = std::atof(args[++i].c_str());
+            } else if (a == "-pd" && i + 1 < args.size()) {
+                aperture = std::atof(args[++i].c_str());
             } else if (a == "-i") {
                 fromStdin = true;
             } else if (a == "-u") {
@@ -124,7 +167,12 @@ int main(int argc, char** argv) {
                 lx += jitter * (0.5 - uniform(rng)) / xRes;
                 ly += jitter * (0.5 - uniform(rng)) / yRes;
             }
-            const std::optional<rt::CameraRay> ray = rt::ViewRay(pv, lx, ly);
+            std::optional<rt::CameraRay> ray = rt::ViewRay(pv, lx, ly);
+            if (ray && aperture > 1e-6 &&
+                !JitterAperture(pv, aperture, uniform(rng), uniform(rng), uniform(rng), ray->origin,
+                                ray->direction)) {
+                ray.reset();
+            }
             if (!ray) {
                 PutRay(format, {}, {});  // rtrace reads a zero direction as "no ray"
                 return;
