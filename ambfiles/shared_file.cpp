@@ -102,10 +102,9 @@ SharedAmbientFile::SharedAmbientFile(std::string path, const AmbientHeaderParams
             fd_ = open(path_.c_str(), O_RDONLY | O_CLOEXEC);
             readOnly_ = fd_ >= 0;
         }
-        if (fd_ < 0) {
-            const bool exists = access(path_.c_str(), F_OK) == 0;
-            ThrowSys(exists ? "cannot open ambient file" : "cannot create ambient file", err);
-        }
+        // Radiance's words whether or not the file exists; the system's
+        // reason (no such folder, permission denied) tells which.
+        if (fd_ < 0) ThrowSys("cannot open ambient file", err);
     }
     ownerPid_ = getpid();
     if (struct stat st{}; fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {

@@ -489,7 +489,8 @@ TEST(SharedAmbientFile, MissingDirectoryIsAClearError) {
         SharedAmbientFile f(path, Params(), {});
         FAIL();
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot create ambient file \"" + path + "\""),
+        EXPECT_NE(std::string(e.what()).find("cannot open ambient file \"" + path +
+                                             "\": No such file or directory"),
                   std::string::npos)
             << e.what();
         EXPECT_EQ(e.ExitCode(), 2);
@@ -523,7 +524,7 @@ void CheckReadOnlyDirectoryAndFile(const TempDir& dir, const std::string& existi
         SharedAmbientFile f(dir.File("new.amb"), Params(), {});
         ADD_FAILURE() << "created a file in a read-only directory";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot create ambient file"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("cannot open ambient file"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("Permission denied"), std::string::npos) << e.what();
         EXPECT_EQ(e.ExitCode(), 2);
     }
