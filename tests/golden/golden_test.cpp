@@ -541,8 +541,8 @@ TEST(GoldenPrism, PrismsRedirectAsRadiance) {
 /// to Russian roulette (Radiance's "shadow commitment"): at -aa 0 -ad 1024
 /// the hemisphere rays' prism children fall below -lw, and the mean with
 /// roulette (the default -lr -10) agrees with the mean without it (-lw
-/// 1e-9) within 2 %; lazyrad made 5.7 % more while it promoted such shadow
-/// rays without ever ending them.
+/// 1e-9) within 2 %; a first version that promoted such shadow rays without
+/// ever ending them made 5.7 % more.
 TEST(GoldenPrism, IndirectLightThroughPrisms) {
     const std::string floor = "head -96 room.pts | ";
     const auto mean = [&](const std::string& options) {
