@@ -560,8 +560,9 @@ TEST(GoldenPrism, IndirectLightThroughPrisms) {
 }
 
 /// A prism's function errors: too few strings stop loading with the
-/// material's name; a zero direction is a compute error (Radiance's warning)
-/// and the ray gets nothing that way.
+/// material's name; a zero direction or a math error is a compute error
+/// (Radiance's warnings, "projection compute error" when making images) and
+/// the ray gets nothing that way.
 TEST(GoldenPrism, BadRedirectionsAreReported) {
     const std::string tmp = ::testing::TempDir() + "/prism_bad";
     RunCommand("mkdir -p " + tmp);
@@ -583,6 +584,19 @@ TEST(GoldenPrism, BadRedirectionsAreReported) {
     EXPECT_NE(zero.find("0.000000e+00\t0.000000e+00\t0.000000e+00\t\nstatus 0"),
               std::string::npos)
         << zero;
+    // A math error (here at every ray) when the lamp's image is made and at
+    // the ray: Radiance's two warnings, and no light that way.
+    const std::string domain = run(
+        "void light l 0 0 3 10 10 10\nl sphere s 0 0 4  0 0 3  .1\n"
+        "void prism1 p 5 sqrt(Dz-5) Dx Dy Dz . 0 0");
+    EXPECT_NE(domain.find("rtrace: warning - projection compute error for prism1 \"p\"\n"),
+              std::string::npos)
+        << domain;
+    EXPECT_NE(domain.find("rtrace: warning - compute error for prism1 \"p\"\n"), std::string::npos)
+        << domain;
+    EXPECT_NE(domain.find("0.000000e+00\t0.000000e+00\t0.000000e+00\t\nstatus 0"),
+              std::string::npos)
+        << domain;
 }
 
 /// oconv -i: an octree extended with another file (a lamp). -dt 0: with two
