@@ -611,8 +611,7 @@ void Redirect(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Materi
         // Radiance warns at every such ray; once per material here, as for
         // patterns.
         if (ts.patternWarned.insert(m.function).second) {
-            ts.Warn("compute error for " + std::string(MaterialTypeName(m.type)) + " \"" +
-                    m.name + "\"");
+            ts.Warn("compute error for " + setup.scene.patterns[m.function].owner);
         }
         return;
     }

@@ -52,6 +52,13 @@ private:
     Transform composed_;  // set inside instances only
 };
 
+/// A render-space direction as the function sees directions (Dx…): turned
+/// into `space` and divided by its scale.
+Vec3 FunctionDirection(const PatternSpace& space, const Vec3& v) {
+    const Transform& f = space.PatternFromRender();
+    return f.Vector(v) / f.scale;
+}
+
 /// The ray quantities $1 … $27 of `ray` in a modifier's space (§10.3).
 class PatternChannels final : public cal::ChannelSource {
 public:
@@ -131,8 +138,7 @@ private:
 class RedirectChannels final : public cal::ChannelSource {
 public:
     RedirectChannels(const TracedRay& ray, const PatternSpace& space, const Vec3& sourceDir)
-        : ray_(ray, space),
-          sourceDir_(space.PatternFromRender().Vector(sourceDir) / space.PatternFromRender().scale) {}
+        : ray_(ray, space), sourceDir_(FunctionDirection(space, sourceDir)) {}
 
     double Channel(int n) const override {
         using namespace cal;
@@ -278,8 +284,7 @@ public:
                    const BrdfInputs& in)
         : context_(context),
           space_(ray, brdf),
-          channels_(ray, space_, space_.PatternFromRender().Vector(in.normal) /
-                                     space_.PatternFromRender().scale,
+          channels_(ray, space_, FunctionDirection(space_, in.normal),
                     std::clamp(in.cosine, -1.0, 1.0), in.color) {
         context_.SetChannels(&channels_);
         context_.SetArguments(brdf.args, brdf.owner);
@@ -290,10 +295,7 @@ public:
     BrdfEvaluation& operator=(const BrdfEvaluation&) = delete;
 
     /// A direction in the function's space, as Dx… are.
-    Vec3 Direction(const Vec3& v) const {
-        const Transform& f = space_.PatternFromRender();
-        return f.Vector(v) / f.scale;
-    }
+    Vec3 Direction(const Vec3& v) const { return FunctionDirection(space_, v); }
 
 private:
     cal::Context& context_;
@@ -368,7 +370,9 @@ Redirection EvaluateRedirection(const Scene& scene, cal::Context& context, const
         r.outcome = Redirection::Outcome::MathError;
     } else if (r.coefficient > kFtiny) {
         double v[3];
-        for (std::size_t k = 0; k < 3; ++k) v[k] = functions.Evaluate(prism.values[first + 1 + k], context);
+        for (std::size_t k = 0; k < 3; ++k) {
+            v[k] = functions.Evaluate(prism.values[first + 1 + k], context);
+        }
         if (context.mathError() != cal::MathError::None) {
             r.outcome = Redirection::Outcome::MathError;
         } else {

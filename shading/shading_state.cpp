@@ -75,8 +75,7 @@ RedirectionProbe PrismProbe(const Scene& scene, const RayCore& core, const Warni
         const Material& m = RelayMaterial(scene, scene.surfaces[surface]);
         const Redirection r = EvaluateRedirection(scene, *context, ray, m.function, n, Vec3());
         if (r.outcome == Redirection::Outcome::MathError && warn) {
-            warn("projection compute error for " + std::string(MaterialTypeName(m.type)) +
-                 " \"" + m.name + "\"");
+            warn("projection compute error for " + scene.patterns[m.function].owner);
         }
         if (r.outcome != Redirection::Outcome::Redirected) return std::nullopt;
         return r.dir;
