@@ -36,6 +36,20 @@ RayResult BogusRecord(const Vec3& origin, const Vec3& direction) {
     return r;
 }
 
+/// The options the renderer gets. When no output letter needs a value,
+/// Radiance 5.4a's rtrace only intersects the rays (castonly) and leaves the
+/// ambient calculation out altogether: its -af file is neither opened nor
+/// created, and no record is computed.
+RtraceOptions RendererOptions(const RtraceOptions& options, const OutputSpec& spec) {
+    RtraceOptions o = options;
+    if (spec.castOnly) {
+        o.shading.castOnly = true;
+        o.ambient.bounces = 0;
+        o.ambient.file.clear();
+    }
+    return o;
+}
+
 bool TraceListAccepts(const RtraceOptions& o, const RayResult& r) {
     if (!o.traceListSet) return true;
     // No object: Radiance's ourtrace() prints it only for an exclude list.
@@ -57,7 +71,8 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
 
     const OutputSpec spec = ParseOutputSpec(opt, warn);
     if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");
-    std::unique_ptr<RayEvaluator> evaluator = env.makeEvaluator(cl.sceneFiles, opt, warn);
+    std::unique_ptr<RayEvaluator> evaluator =
+        env.makeEvaluator(cl.sceneFiles, RendererOptions(opt, spec), warn);
 
     if (opt.header) {
         std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);

@@ -128,6 +128,19 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
     Report(ts, ray);
 }
 
+void RayTree::Cast(ThreadState& ts, TracedRay& ray) const {
+    ++ts.stats.raysTraced;
+    if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax, ray.Leaving())) {
+        ray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
+    } else if (ray.rmax > 0) {
+        ray.rot = kFhuge;  // clipped by -ld: Radiance's raycast() forgets the aft plane
+        ray.rop = ray.org + ray.dir * ray.rmax;
+    } else if (!HitDistantSource(ray)) {
+        ray.rot = kFhuge;
+        ray.rop = ray.org;
+    }
+}
+
 void RayTree::ParticipateIn(ThreadState& ts, const Medium& medium, TracedRay& ray) const {
     if (Intens(medium.extinction) <= 1.0 / kFhuge) return;
     const bool shadow = (ray.crtype & kShadowRay) != 0;
@@ -388,7 +401,11 @@ RayResult RayTree::TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir,
         Report(ts, ray);
         return withOutcome(MakeResult(ts, ray));
     }
-    Trace(ts, ray);
+    if (s_.shading.castOnly) {
+        Cast(ts, ray);
+    } else {
+        Trace(ts, ray);
+    }
     return withOutcome(MakeResult(ts, ray));
 }
 

@@ -74,6 +74,9 @@ struct ShadingOptions {
     bool uncorrelated = true;           // -u: every ray its own random stream (false: one
                                         // stream for all rays, correlated sampling)
     unsigned long long seed = 0;        // base seed (-seed); runs with equal seeds are identical
+    /// Input rays are only intersected, never shaded (Radiance's castonly:
+    /// rtrace's output asks for nothing that needs a value, e.g. -oLps).
+    bool castOnly = false;
 };
 
 }  // namespace rt

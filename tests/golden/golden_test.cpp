@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -243,6 +244,23 @@ TEST(Golden, RayLengthsMatchRadiance) {
     CompareNumbers("-oLlRX", kRtrace + " -h -oLlRX -ab 0 -dj 0 " + kSource +
                                  "/scenes/mixed/mixed.rad < " + data + "mixed_lengths.rays",
                    data + "mixed_lengths_oLlRX.txt");
+}
+
+/// Output that needs no value (-oodcLpNswmM~: points, lengths, normals,
+/// names) only intersects the rays, as Radiance's castonly does: the same
+/// records as Radiance's at -ab 2, nothing shaded (no shadow ray, no
+/// hemisphere in the -t summary), and the -af file neither opened nor created.
+TEST(Golden, CastOnlyOutputMatchesRadiance) {
+    const std::string data = kSource + "/tests/data/golden/";
+    const std::string ambient = ::testing::TempDir() + "cast_only.amb";
+    std::remove(ambient.c_str());
+    const std::string rest = " -h -oodcLpNswmM~ -ab 2 -af " + ambient + " " + kSource +
+                             "/scenes/mixed/mixed.rad < " + data + "mixed_lengths.rays";
+    CompareNumbers("-oodcLpNswmM~", kRtrace + rest, data + "mixed_cast.txt");
+    EXPECT_FALSE(std::filesystem::exists(ambient)) << "cast-only run made " << ambient;
+    const std::string summary = RunCommand(kRtrace + " -t 1000" + rest + " 2>&1 >/dev/null");
+    EXPECT_NE(summary.find(" 0 hemispheres, 400 rays traced + 0 shadow rays"), std::string::npos)
+        << summary;
 }
 
 /// Trace output (-otvsL, the ray tree) for 60 random rays in the cornell box

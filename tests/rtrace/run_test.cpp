@@ -110,11 +110,11 @@ TEST(RtraceRun, HeaderThenRecords) {
 
 TEST(RtraceRun, PassesNormalisedDirectionsLimitsAndSeeds) {
     FakeState s;
-    Result r = RunWith({"-h", "-od", "-ld", "-u-", "-ab", "2", "x.rad", "y.rad"},
+    Result r = RunWith({"-h", "-odv", "-ld", "-u-", "-ab", "2", "x.rad", "y.rad"},
                        "0 0 0 0 0 4\n0 0 0 3 0 4\n", &s);
     EXPECT_EQ(r.out,
-              "0.000000e+00\t0.000000e+00\t1.000000e+00\t\n"
-              "6.000000e-01\t0.000000e+00\t8.000000e-01\t\n");
+              "0.000000e+00\t0.000000e+00\t1.000000e+00\t" + std::string(kValueLine) +
+              "6.000000e-01\t0.000000e+00\t8.000000e-01\t" + kValueLine);
     EXPECT_EQ(s.rmax, (std::vector<double>{4, 5}));
     EXPECT_EQ(s.indices, (std::vector<std::uint64_t>{0, 1}));
     EXPECT_EQ(s.sceneFiles, (std::vector<std::string>{"x.rad", "y.rad"}));
@@ -129,6 +129,22 @@ TEST(RtraceRun, PassesNormalisedDirectionsLimitsAndSeeds) {
     EXPECT_TRUE(s.options.shading.uncorrelated);
     RunWith({"-h", "-seed", "7", "x.rad"}, "0 0 0 0 0 4\n", &s, 12345);
     EXPECT_EQ(s.options.shading.seed, 7u);
+}
+
+// Output that needs no value: the renderer only intersects (Radiance's
+// castonly) and gets no ambient calculation and no ambient file.
+TEST(RtraceRun, CastOnlyOutputLeavesTheAmbientCalculationOut) {
+    FakeState s;
+    RunWith({"-h", "-oLps", "-ab", "2", "-af", "x.amb", "x.rad"}, "0 0 0 0 0 1\n", &s);
+    EXPECT_TRUE(s.options.shading.castOnly);
+    EXPECT_EQ(s.options.ambient.bounces, 0);
+    EXPECT_EQ(s.options.ambient.file, "");
+    RunWith({"-h", "-oLpsv", "-ab", "2", "-af", "x.amb", "x.rad"}, "0 0 0 0 0 1\n", &s);
+    EXPECT_FALSE(s.options.shading.castOnly);
+    EXPECT_EQ(s.options.ambient.bounces, 2);
+    EXPECT_EQ(s.options.ambient.file, "x.amb");
+    RunWith({"-h", "-otLps", "-ab", "2", "x.rad"}, "0 0 0 0 0 1\n", &s);  // trace mode shades
+    EXPECT_FALSE(s.options.shading.castOnly);
 }
 
 TEST(RtraceRun, FlushRequestRepeatsPreviousRay) {

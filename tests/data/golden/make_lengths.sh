@@ -57,3 +57,11 @@ PY
     while IFS= read -r ray; do
         echo "$ray" | "$rad/bin/rtrace" -h -ab 0 -dj 0 -dt 0 -ss 0 -u- -oTvsL "$tmp/daylit.oct"
     done < "$here/daylit_sun_trace.rays" > "$here/daylit_sun_oTvsL.txt")
+
+# Golden.CastOnlyOutputMatchesRadiance: every letter that needs no value
+# (-oodcLpNswmM~) for the mixed room's 400 rays at -ab 2 with -af. Radiance
+# then only intersects the rays (castonly) and leaves the ambient file alone:
+# the script stops if it was created.
+"$rad/bin/rtrace" -h -oodcLpNswmM~ -ab 2 -af "$tmp/cast.amb" "$tmp/mixed.oct" \
+    < "$here/mixed_lengths.rays" > "$here/mixed_cast.txt"
+[ ! -e "$tmp/cast.amb" ] || { echo "Radiance made $tmp/cast.amb in cast-only mode" >&2; exit 1; }
