@@ -208,8 +208,9 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
             continue;
         }
         if (files.size() != 1) {
-            ThrowUserError("an octree (\"" + PrintableWord(file) +
-                           "\") must be the only scene argument");
+            // Radiance takes one octree and calls any other argument after
+            // the options a command line error, named after the first.
+            ThrowUserError("command line error at '" + PrintableWord(files.front()) + "'");
         }
         return LoadOctree(*in, file, options, warn);
     }

@@ -262,9 +262,18 @@ TEST(Octree, OctreeMustBeTheOnlySceneArgument) {
         // The name as messages show it: a checkout's long path is cut at 60
         // characters (PrintableWord), so the expectation is built the same way.
         EXPECT_EQ(std::string(e.what()),
-                  "an octree (\"" + PrintableWord(kData + "cornell_frozen.oct") +
-                      "\") must be the only scene argument");
+                  "command line error at '" + PrintableWord(kData + "cornell_frozen.oct") + "'");
         EXPECT_EQ(e.ExitCode(), 1);
+    }
+    // Radiance names the first argument after the options, whatever it is:
+    // `rtrace -u 1 scene.oct` (-u takes no value) is an error at '1'.
+    for (const std::string& first : {std::string("1"), kData + "lamp.rad"}) {
+        try {
+            LoadScene({first, kData + "cornell_frozen.oct"}, SceneLoadOptions{}, nullptr);
+            FAIL() << "loaded an octree after " << first;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), "command line error at '" + PrintableWord(first) + "'");
+        }
     }
     // A !command argument must print an octree.
     try {
