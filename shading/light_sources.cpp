@@ -136,7 +136,12 @@ void SetUpDistant(LightSource& src, const Surface& s, bool randomFrames, Rng& rn
     src.circular = true;
     src.location = d.direction;
     src.normal = d.direction;
-    src.area = 2.0 * kPi * (1.0 - std::cos(theta));
+    // Radiance keeps a source's solid angle in a float (SRCREC ss2), and its
+    // cone test, 2π(1 − D·dir) <= Ω, uses that float: a 180° sky or ground
+    // then takes every ray from about 3e-8 below its horizon up, so a level
+    // view's horizontal rays see the sky. In double, 2π(1 − cos 90°) is a
+    // hair below 2π and they would miss it.
+    src.area = static_cast<float>(2.0 * kPi * (1.0 - std::cos(theta)));
     src.radius = std::sqrt(src.area / kPi);
     SetFlatSize(src, randomFrames, rng);
 }

@@ -263,6 +263,20 @@ TEST(Golden, CastOnlyOutputMatchesRadiance) {
         << summary;
 }
 
+/// A 180° sky and a 180° ground (`source` with glow): Radiance keeps their
+/// solid angle in a float, so each covers its closed hemisphere and about 3e-8
+/// beyond. Horizontal rays (a level view's middle row) see the sky, which
+/// comes first; so does a ray 1e-9 below the horizon, and one 1e-7 below
+/// sees the ground. The expected lines are Radiance 5.4a's output for
+/// tests/data/golden/horizon.rays (`oconv horizon.rad`, `rtrace -h -w -ov`).
+TEST(Golden, HorizontalRaysSeeTheFirst180DegreeSource) {
+    const std::string data = kSource + "/tests/data/golden/";
+    const std::string sky = "1.000000e+00\t2.000000e+00\t3.000000e+00\t\n";
+    const std::string ground = "4.000000e+00\t5.000000e+00\t6.000000e+00\t\n";
+    EXPECT_EQ(RunCommand(kRtrace + " -h -w -ov " + data + "horizon.rad < " + data + "horizon.rays"),
+              sky + sky + sky + ground + sky);
+}
+
 /// Trace output (-otvsL, the ray tree) for 60 random rays in the cornell box
 /// against Radiance's (tests/data/golden/make_lengths.sh): shadow rays that
 /// something other than their source stops are reported, as Radiance's

@@ -121,7 +121,8 @@ TEST(Renderer, SunOnGroundMatchesDistantSourceFormula) {
     b.AddRing("ground", ground, {0, 0, 0}, {0, 0, 1}, 0, 100);
     Fixture f(b);
     RayResult r = f.Trace({0, 0, 5}, {0.1, 0.2, -1});
-    double omega = 2 * kPi * (1 - std::cos(angle / 2 * kPi / 180));
+    // The sun's solid angle as Radiance keeps it, in a float (light_sources.cpp).
+    double omega = static_cast<float>(2 * kPi * (1 - std::cos(angle / 2 * kPi / 180)));
     double exact = 0.2 / kPi * L * omega * sunDir.z;
     EXPECT_NEAR(r.value.g, exact, 1e-9 * exact);
     // Looking straight at the sun shows its radiance; the miss reports 1e10.
