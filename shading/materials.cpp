@@ -299,8 +299,10 @@ void ShadeLight(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mate
         // An illum not hit on purpose shows its alternate material, or
         // nothing; so does one hit by a shadow ray aimed at an image it
         // relays as its alternate (a mirror or prism), which relays it.
+        // With -i the alternate is the surface a primary ray meters
+        // (Radiance's m_illum() shades it through rayshade()).
         if (m.alternate >= 0) {
-            tree.ShadeMaterial(ts, ray, setup.scene.materials[m.alternate]);
+            tree.ShadeSurfaceMaterial(ts, ray, setup.scene.materials[m.alternate]);
         } else {
             tree.PassThrough(ts, ray);
         }

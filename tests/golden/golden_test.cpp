@@ -277,6 +277,18 @@ TEST(Golden, HorizontalRaysSeeTheFirst180DegreeSource) {
               sky + sky + sky + ground + sky);
 }
 
+/// -i meters the first surface a primary ray meets; on an illum that is its
+/// alternate material (Radiance's m_illum() shades it through rayshade()):
+/// a plastic or a mirror alternate becomes the Lambertian meter, a glass one
+/// is passed through, and an illum without one as well. Radiance's output in
+/// tests/data/golden/illum_i_ovs.txt (make_illum_i.sh).
+TEST(Golden, IrradianceAtHitMetersAnIllumsAlternate) {
+    const std::string data = kSource + "/tests/data/golden/";
+    CompareNumbers("-i illum", kRtrace + " -h -w -i -dt 0 -ovs " + data + "illum_i.rad < " + data +
+                                   "illum_i.rays",
+                   data + "illum_i_ovs.txt");
+}
+
 /// Trace output (-otvsL, the ray tree) for 60 random rays in the cornell box
 /// against Radiance's (tests/data/golden/make_lengths.sh): shadow rays that
 /// something other than their source stops are reported, as Radiance's
