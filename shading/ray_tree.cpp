@@ -124,8 +124,10 @@ void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
         ray.rot = kFhuge;
         ray.rop = ray.org;
     }
-    Participate(ts, ray);
+    // Trace output shows the value before the medium acts on it, as
+    // Radiance's raytrace() reports before rayparticipate().
     Report(ts, ray);
+    Participate(ts, ray);
 }
 
 void RayTree::Cast(ThreadState& ts, TracedRay& ray) const {

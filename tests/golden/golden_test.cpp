@@ -289,6 +289,18 @@ TEST(Golden, IrradianceAtHitMetersAnIllumsAlternate) {
                    data + "illum_i_ovs.txt");
 }
 
+/// Trace output in a participating medium: each ray's line carries its value
+/// before the medium between its origin and its end acts on it (Radiance's
+/// raytrace() reports before rayparticipate()); the primary record after.
+/// A room in fog lit through a glass pane; Radiance's output in
+/// tests/data/golden/fog_trace_oTvL.txt (make_lengths.sh).
+TEST(Golden, TraceShowsValuesBeforeTheMedium) {
+    const std::string data = kSource + "/tests/data/golden/";
+    CompareNumbers("-oTvL in fog", kRtrace + " -h -w -me .1 .1 .1 -ab 0 -dj 0 -dt 0 -oTvL " + data +
+                                       "fog_trace.rad < " + data + "fog_trace.rays",
+                   data + "fog_trace_oTvL.txt");
+}
+
 /// Trace output (-otvsL, the ray tree) for 60 random rays in the cornell box
 /// against Radiance's (tests/data/golden/make_lengths.sh): shadow rays that
 /// something other than their source stops are reported, as Radiance's

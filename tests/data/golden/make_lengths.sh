@@ -65,3 +65,10 @@ PY
 "$rad/bin/rtrace" -h -oodcLpNswmM~ -ab 2 -af "$tmp/cast.amb" "$tmp/mixed.oct" \
     < "$here/mixed_lengths.rays" > "$here/mixed_cast.txt"
 [ ! -e "$tmp/cast.amb" ] || { echo "Radiance made $tmp/cast.amb in cast-only mode" >&2; exit 1; }
+
+# Golden.TraceShowsValuesBeforeTheMedium: -oTvL in a room in fog (-me .1),
+# whose lamp shines through a glass pane (fog_trace.rad, its walls from
+# genbox): each traced ray's value is reported before the medium acts on it.
+"$rad/bin/oconv" "$here/fog_trace.rad" > "$tmp/fog.oct"
+"$rad/bin/rtrace" -h -w -me .1 .1 .1 -ab 0 -dj 0 -dt 0 -oTvL "$tmp/fog.oct" \
+    < "$here/fog_trace.rays" > "$here/fog_trace_oTvL.txt"
