@@ -832,13 +832,13 @@ private:
         if (object.type == "polygon") {
             keep = SetPolygon(object, surface);
         } else if (object.type == "sphere" || object.type == "bubble") {
-            SetSphere(object, surface);
+            keep = SetSphere(object, surface);
         } else if (object.type == "ring") {
-            SetRing(object, surface);
+            keep = SetRing(object, surface);
         } else if (object.type == "source") {
             SetSource(object, surface);
         } else {
-            SetCone(object, surface);
+            keep = SetCone(object, surface);
         }
         if (!keep) return;
         // Geometry from huge coordinates can overflow even though every argument is finite.
@@ -1044,6 +1044,8 @@ private:
         // 1e-14 of the polygon's squared size count as zero.
         double size2 = 0;
         for (const Vec3& p : v) size2 = std::max(size2, LengthSquared(p - v[0]));
+        // Also as a light source, which Radiance's rtrace refuses ("zero source
+        // area"): README, Robustness.
         if (length <= kDegenerateArea * size2) {
             Warn(object, "zero area");
             return false;
@@ -1068,29 +1070,53 @@ private:
         return true;
     }
 
-    void SetSphere(const SceneObject& object, Surface& surface) {
+    /// A degenerate shape, which oconv warns about (`what`, in its words) and
+    /// leaves out of the octree, so that Radiance's rtrace never meets it;
+    /// false, for the caller to drop it. As a light source it stops Radiance's
+    /// rtrace, which sets sources up from the objects themselves
+    /// (marksources()), with `asSource`.
+    bool Degenerate(const SceneObject& object, const Surface& surface, const char* what,
+                    const char* asSource) const {
+        if (surfaces_ == &scene_.surfaces && surface.material >= 0 &&
+            IsSourceMaterial(scene_.materials[static_cast<std::size_t>(surface.material)],
+                             surface.type)) {
+            Fail(object, asSource);
+        }
+        Warn(object, what);
+        return false;
+    }
+
+    bool SetSphere(const SceneObject& object, Surface& surface) {
         const auto& a = object.rargs;
         if (a.size() != 4) BadArgs(object);
         Sphere sphere;
         sphere.center = Vec3(a[0], a[1], a[2]);
         sphere.radius = a[3];
         sphere.inward = object.type == "bubble";
+        surface.type = sphere.inward ? SurfaceType::Bubble : SurfaceType::Sphere;
         if (sphere.radius < -kFtiny) {
             Warn(object, "negative radius");
             sphere.radius = -sphere.radius;
             sphere.inward = !sphere.inward;
         } else if (sphere.radius <= kFtiny) {
-            Fail(object, "zero radius");
+            // A bubble cannot be a source at all.
+            return Degenerate(object, surface, "zero radius",
+                              sphere.inward ? "illegal material" : "illegal source radius");
         }
         surface.type = sphere.inward ? SurfaceType::Bubble : SurfaceType::Sphere;
         surface.shape = sphere;
+        return true;
     }
 
     static int Sign(double r) { return r < -kFtiny ? -1 : (r > kFtiny ? 1 : 0); }
 
-    void SetCone(const SceneObject& object, Surface& surface) {
+    bool SetCone(const SceneObject& object, Surface& surface) {
         const auto& a = object.rargs;
         const bool cylinderLike = object.type == "cylinder" || object.type == "tube";
+        // As a source a cylinder is Radiance's "illegal source" when
+        // degenerate; a cone or cup cannot be one at all.
+        surface.type = cylinderLike ? SurfaceType::Cylinder : SurfaceType::Cone;
+        const char* asSource = cylinderLike ? "illegal source" : "illegal material";
         if (a.size() != (cylinderLike ? 7u : 8u)) BadArgs(object);
         Cone cone;
         cone.p0 = Vec3(a[0], a[1], a[2]);
@@ -1104,12 +1130,12 @@ private:
                 cone.inward = !cone.inward;
                 r = -r;
             } else if (r <= kFtiny) {
-                Fail(object, "illegal radius");
+                return Degenerate(object, surface, "illegal radii", asSource);
             }
             cone.r0 = cone.r1 = r;
         } else {
             const int sign0 = Sign(a[6]), sign1 = Sign(a[7]);
-            if (sign0 + sign1 == 0) Fail(object, "illegal radii");
+            if (sign0 + sign1 == 0) return Degenerate(object, surface, "illegal radii", asSource);
             if (sign0 < 0 || sign1 < 0) {
                 Warn(object, "negative radii");
                 cone.inward = !cone.inward;
@@ -1128,28 +1154,36 @@ private:
                 cone.r0 = cone.r1 = r0;
             }
         }
-        if (LengthSquared(cone.p1 - cone.p0) == 0) Fail(object, "zero length");
+        if (LengthSquared(cone.p1 - cone.p0) == 0) {
+            return Degenerate(object, surface, "unknown orientation", asSource);
+        }
         surface.type = cylinder ? (cone.inward ? SurfaceType::Tube : SurfaceType::Cylinder)
                                 : (cone.inward ? SurfaceType::Cup : SurfaceType::Cone);
         surface.shape = cone;
+        return true;
     }
 
-    void SetRing(const SceneObject& object, Surface& surface) {
+    bool SetRing(const SceneObject& object, Surface& surface) {
         const auto& a = object.rargs;
         if (a.size() != 8) BadArgs(object);
+        surface.type = SurfaceType::Ring;
         const int sign0 = Sign(a[6]), sign1 = Sign(a[7]);
-        if (sign0 < 0 || sign1 < 0) Fail(object, "negative radii");
         const double r0 = a[6] * sign0, r1 = a[7] * sign1;
-        if (std::fabs(r1 - r0) <= kFtiny) Fail(object, "illegal radii (inner and outer radius equal)");
+        // Negative or equal radii.
+        if (sign0 < 0 || sign1 < 0 || std::fabs(r1 - r0) <= kFtiny) {
+            return Degenerate(object, surface, "illegal radii", "illegal source");
+        }
         const Vec3 normal(a[3], a[4], a[5]);
-        if (LengthSquared(normal) == 0) Fail(object, "zero normal");
+        if (LengthSquared(normal) == 0) {
+            return Degenerate(object, surface, "unknown orientation", "illegal source");
+        }
         Ring ring;
         ring.center = Vec3(a[0], a[1], a[2]);
         ring.normal = Normalize(normal);
         ring.r0 = std::min(r0, r1);
         ring.r1 = std::max(r0, r1);
-        surface.type = SurfaceType::Ring;
         surface.shape = ring;
+        return true;
     }
 
     void SetSource(const SceneObject& object, Surface& surface) {

@@ -141,6 +141,16 @@ bool IsLightType(MaterialType type) {
            type == MaterialType::Glow || type == MaterialType::Spotlight;
 }
 
+bool IsSourceMaterial(const Material& m, SurfaceType type) {
+    if (!IsLightType(m.type)) return false;
+    const LightParams& params = std::get<LightParams>(m.params);
+    // A glow without radius only shows through indirect rays.
+    if (m.type == MaterialType::Glow && type != SurfaceType::Source && params.radius <= kFtiny) {
+        return false;
+    }
+    return params.color.r > kFtiny || params.color.g > kFtiny || params.color.b > kFtiny;
+}
+
 Bounds3 SurfaceBounds(const Surface& surface) {
     Bounds3 bounds;
     if (const auto* polygon = std::get_if<Polygon>(&surface.shape)) {

@@ -286,6 +286,7 @@ bool IsTransparentType(MaterialType type);
 /// light, illum, glow, spotlight.
 bool IsLightType(MaterialType type);
 
+
 /// Flat polygon, vertices counter-clockwise seen from the front (§2.4).
 struct Polygon {
     std::vector<Vec3> vertices;  // n >= 3, a repeated closing vertex removed
@@ -328,6 +329,11 @@ struct DistantSource {
 /// Radiance's hit object becomes the instance or the mesh (radiance-functions.md
 /// §13.2, §13.4). Their shape is an empty Polygon.
 enum class SurfaceType { Polygon, Sphere, Bubble, Cone, Cup, Cylinder, Tube, Ring, Source, Instance, Mesh };
+
+/// Whether a top-level surface of `type` made of `m` is a light source of the
+/// direct calculation (Radiance's marksources()): an emitting material, not
+/// a glow without radius (except on a distant `source`), not black.
+bool IsSourceMaterial(const Material& m, SurfaceType type);
 
 /// Radiance's type name ("polygon", ...), for messages about a surface.
 const char* SurfaceTypeName(SurfaceType type);

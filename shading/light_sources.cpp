@@ -237,12 +237,8 @@ std::vector<LightSource> FindLightSources(const Scene& scene, const WarningSink&
         const Surface& s = scene.surfaces[i];
         if (s.material < 0) continue;
         const Material& m = scene.materials[s.material];
-        if (!IsLightType(m.type)) continue;
+        if (!IsSourceMaterial(m, s.type)) continue;
         const LightParams& params = std::get<LightParams>(m.params);
-        if (m.type == MaterialType::Glow && s.type != SurfaceType::Source && params.radius <= kFtiny) {
-            continue;  // a glow without radius only shows through indirect rays
-        }
-        if (params.color.r <= kFtiny && params.color.g <= kFtiny && params.color.b <= kFtiny) continue;
 
         LightSource src;
         src.surface = i;
