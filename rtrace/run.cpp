@@ -37,15 +37,22 @@ RayResult BogusRecord(const Vec3& origin, const Vec3& direction) {
 }
 
 /// The options the renderer gets. When no output letter needs a value,
-/// Radiance 5.4a's rtrace only intersects the rays (castonly) and leaves the
-/// ambient calculation out altogether: its -af file is neither opened nor
-/// created, and no record is computed.
-RtraceOptions RendererOptions(const RtraceOptions& options, const OutputSpec& spec) {
+/// Radiance 5.4a's rtrace only intersects the rays (castonly), in one
+/// process, and leaves the ambient calculation out altogether: its -af file
+/// is neither opened nor created, and no record is computed. A flush
+/// interval (-x without -y) below the process count lowers the count to it.
+RtraceOptions RendererOptions(const RtraceOptions& options, const OutputSpec& spec,
+                              const WarningSink& warn) {
     RtraceOptions o = options;
     if (spec.castOnly) {
         o.shading.castOnly = true;
         o.ambient.bounces = 0;
         o.ambient.file.clear();
+        o.processes = 1;
+    }
+    if (o.yResolution <= 0 && o.xResolution > 0 && o.xResolution < o.processes) {
+        warn("reducing number of processes to match flush interval");
+        o.processes = o.xResolution;
     }
     return o;
 }
@@ -71,8 +78,9 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
 
     const OutputSpec spec = ParseOutputSpec(opt, warn);
     if (!env.makeEvaluator) throw Error(Error::Kind::Internal, "no renderer configured");
+    const RtraceOptions rendererOptions = RendererOptions(opt, spec, warn);
     std::unique_ptr<RayEvaluator> evaluator =
-        env.makeEvaluator(cl.sceneFiles, RendererOptions(opt, spec), warn);
+        env.makeEvaluator(cl.sceneFiles, rendererOptions, warn);
 
     if (opt.header) {
         std::span<const std::string> commandLine(cl.args.data(), cl.firstScene);
@@ -112,7 +120,7 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
     // Rays are evaluated in batches so that -n threads can share them;
     // one process (or trace output, which Radiance never parallelises)
     // evaluates them one at a time, as they arrive.
-    const int threads = spec.trace ? 1 : std::max(1, opt.processes);
+    const int threads = spec.trace ? 1 : std::max(1, rendererOptions.processes);
     const std::size_t batchLimit = threads > 1 ? 1024 * static_cast<std::size_t>(threads) : 1;
     std::vector<RayQuery> pending;
     std::vector<RayResult> results;

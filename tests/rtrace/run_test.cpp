@@ -147,6 +147,25 @@ TEST(RtraceRun, CastOnlyOutputLeavesTheAmbientCalculationOut) {
     EXPECT_FALSE(s.options.shading.castOnly);
 }
 
+// Radiance 5.4a's rtrace: a flush interval (-x without -y) below -n lowers
+// the process count to it, with a warning; not with -y, not when they are
+// equal, and not for cast-only output, which runs in one process anyway.
+TEST(RtraceRun, FlushIntervalBelowProcessCountReducesIt) {
+    const std::string warning = "rtrace: warning - reducing number of processes to match flush interval\n";
+    FakeState s;
+    Result r = RunWith({"-h", "-n", "3", "-x", "2", "x.rad"}, "0 0 0 0 0 1\n", &s);
+    EXPECT_EQ(r.err, warning);
+    EXPECT_EQ(s.options.processes, 2);
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"-h", "-n", "2", "-x", "2", "x.rad"},
+          std::vector<std::string>{"-h", "-n", "4", "-x", "3", "-y", "2", "x.rad"},
+          std::vector<std::string>{"-h", "-n", "2", "-x", "1", "-oL", "x.rad"}}) {
+        r = RunWith(args, "0 0 0 0 0 1\n", &s);
+        EXPECT_EQ(r.err.find("reducing"), std::string::npos) << args[2] << " " << args[4];
+    }
+    EXPECT_EQ(s.options.processes, 1);  // the cast-only run
+}
+
 TEST(RtraceRun, FlushRequestRepeatsPreviousRay) {
     FakeState s;
     Result r = RunWith({"-h", "-oodvL", "s.rad"}, "0 0 0 0 0 0\n1 2 3 0 0 2\n0 0 0 0 0 0\n", &s);
