@@ -11,12 +11,6 @@
 namespace rt {
 namespace {
 
-/// Extrapolation factors are trusted between these bounds (Radiance 5 uses
-/// the same clamp; the classic code only cut negative values to zero, which
-/// let one record drag an interpolation toward black).
-constexpr double kMinExtrapolation = 0.05;
-constexpr double kMaxExtrapolation = 20.0;
-
 /// Deeper records than this are refused (Radiance's files store the level in
 /// one byte; -ab this deep is far beyond any use).
 constexpr int kMaxLevel = 1000;
@@ -162,9 +156,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
             if (eps >= a) return;  // weight 1/ε must exceed 1/a
             w = eps > 1e-3 ? 1.0 / eps : 1e3;
         }
-        // First-order extrapolation (Ward & Heckbert 1992).
-        double f = 1.0 + Dot(delta, u * r.posGradient[0] + v * r.posGradient[1]) +
-                   Dot(Cross(r.normal, q.shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
+        double f = ExtrapolationFactor(r, q.point, q.shadingNormal);
         if (!(f >= kMinExtrapolation)) return;
         // Last, because it may trace a ray.
         if (hidden(r)) return;
@@ -177,6 +169,13 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     for (const std::uint32_t id : moreIds) weigh(id);
     if (weightSum <= kFtiny) return std::nullopt;
     return sum / weightSum;
+}
+
+double ExtrapolationFactor(const AmbientRecord& r, const Vec3& point, const Vec3& shadingNormal) {
+    const Vec3 u = r.uAxis;
+    const Vec3 v = r.VAxis();
+    return 1.0 + Dot(point - r.position, u * r.posGradient[0] + v * r.posGradient[1]) +
+           Dot(Cross(r.normal, shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
 }
 
 std::size_t AmbientCache::size() const {

@@ -132,6 +132,20 @@ private:
     int logBrightCount_ = 0;
 };
 
+/// Extrapolation factors are trusted between these bounds (Radiance 5 uses
+/// the same clamp; the classic code only cut negative values to zero, which
+/// let one record drag an interpolation toward black): below the first a
+/// record is not used, above the second the factor is capped.
+constexpr double kMinExtrapolation = 0.05;
+constexpr double kMaxExtrapolation = 20.0;
+
+/// Ward & Heckbert's first-order extrapolation factor of record `r` at
+/// `point` for the shading normal `shadingNormal` (Radiance's extambient()):
+/// 1 + its translational gradient along the offset + its rotational gradient
+/// along the turn from the record's normal. Exactly 1 at the record itself
+/// with its own normal; a texture or a mesh's smooth normal turns it there.
+double ExtrapolationFactor(const AmbientRecord& r, const Vec3& point, const Vec3& shadingNormal);
+
 /// Radiance's -aw fallback ("dumbamb"): the ambient value `av` blended in log
 /// space with the cache's values, assuming 50 % average reflectance
 /// (radiance-notes.md §4.1 step 7). With `valueWeight <= 0` or no positive

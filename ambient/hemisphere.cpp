@@ -434,9 +434,10 @@ Hemisphere SampleHemisphere(const Vec3& normal, const HemisphereOptions& options
     h.value = sum * (1.0 / (static_cast<double>(rows) * columns));
 
     const double b = Bright(h.value);
-    // Only records use the gradients: without the cache (-aa 0, a hemisphere
-    // per shading point) their per-column sines and cosines would be wasted.
-    if (h.complete && b > kFtiny && options.caching) {
+    // Only records and a turned shading normal use the gradients: without
+    // the cache (-aa 0, a hemisphere per shading point) their per-column
+    // sines and cosines would otherwise be wasted.
+    if (h.complete && b > kFtiny && (options.caching || options.gradients)) {
         // Relative gradients: E = π·Ē, so ∇E / E = ∇E / (π·bright(Ē)).
         const double toRelative = 1.0 / (kPi * b);
         h.posGradient = TranslationalGradient(divs, h.frame) * toRelative;

@@ -46,6 +46,10 @@ struct HemisphereOptions {
                              // at most one per division on average (nt·np)
     double weight = 1;       // record weight: sample counts scale with it (0.5^level)
     bool caching = true;     // -aa > 0: at least 3 rows; without cache at least 1
+    /// Without the cache, compute the gradients anyway (only records use them
+    /// otherwise): the rotational one turns the value to a textured
+    /// surface's shading normal.
+    bool gradients = false;
     /// Hessian records below the first level (IrradianceCache): the relative
     /// standard error (-aa) at or above which a first pass takes all its
     /// extra samples; 0 (the first level) takes them always. Only the

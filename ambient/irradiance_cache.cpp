@@ -110,6 +110,14 @@ double IrradianceCache::SampleFraction(int level, double coefficientIntensity,
     return UnlitDeeperScale(FirstLevelFraction(settings_.bounces, first + 1, deeper));
 }
 
+namespace {
+
+/// Whether the shading normal turns away from the surface normal far enough
+/// to turn the hemisphere's value (Radiance's DOT(nrm, ron) < 0.9999).
+bool TurnedNormal(const AmbientQuery& q) { return Dot(q.normal, q.shadingNormal) < 0.9999; }
+
+}  // namespace
+
 IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, double weight,
                                                  double fraction, int level,
                                                  IrradianceThread& thread,
@@ -122,6 +130,8 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
     // its own (`weight`).
     options.weight = weight * fraction;
     options.caching = store_ != nullptr;
+    const bool turned = TurnedNormal(query);
+    options.gradients = turned;
     // The level's own method (-ah); -aa 0 hemispheres (level -1) take the first level's.
     const bool hessian = settings_.MethodAt(level) == RecordMethod::Hessian;
     // Hessian records below the first level take extra samples only where
@@ -155,9 +165,15 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
         if (h.anySample && level >= 0) {
             out.record = MakeHessianRecord(h, level, weight, settings_.accuracy, store_->limits());
         }
+        if (turned && !out.record) {
+            if (const auto g = HessianRotationalGradient(h, h.frame.u, h.frame.v)) {
+                out.dirGradient = h.frame.u * (*g)[0] + h.frame.v * (*g)[1];
+            }
+        }
     } else {
         const Hemisphere h = SampleHemisphere(query.normal, options, rng, sample);
         if (h.anySample) out.value = h.value;
+        if (turned) out.dirGradient = h.dirGradient;
         if (h.anySample && level >= 0) {
             out.record = MakeClassicRecord(query.point, query.normal, h, level, weight,
                                            store_->limits());
@@ -193,7 +209,10 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
         }
         const Sampled h = Sample(query, weight, 1.0, -1, thread, counters, rng, trace);
         if (!h.value) return {};
-        return {h.value, Source::Computed};
+        // Turned to the shading normal by the rotational gradient, unless
+        // that would take it below 5 % (Radiance's multambient()).
+        const double f = 1.0 + Dot(Cross(query.normal, query.shadingNormal), h.dirGradient);
+        return {f >= kMinExtrapolation ? *h.value * f : *h.value, Source::Computed};
     }
     ++counters.ambientLookups;
     int used = 0;
@@ -225,6 +244,14 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
             }
             ++counters.recordsPerLevel[level];
         }
+    }
+    if (h.record) {
+        // The new record answers its own point as a lookup would, turned to
+        // the shading normal; below the trusted factor, the ambient value
+        // (Radiance's makeambient() returns extambient()'s verdict).
+        const double f = ExtrapolationFactor(*h.record, query.point, query.shadingNormal);
+        if (!(f >= kMinExtrapolation)) return {};
+        return {*h.value * std::min(f, kMaxExtrapolation), Source::Computed};
     }
     // An incomplete hemisphere still gives a usable value; it is just not
     // kept (Radiance's soft failure).

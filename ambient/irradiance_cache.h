@@ -241,6 +241,10 @@ private:
     struct Sampled {
         std::optional<Rgb> value;
         std::optional<AmbientRecord> record;
+        /// Without a record: the relative rotational gradient (1/radian,
+        /// tangent to the normal sampled about) when the query's shading
+        /// normal turns away from it, else zero.
+        Vec3 dirGradient;
     };
     /// `fraction` scales the hemisphere's sample counts (not the record's weight).
     Sampled Sample(const AmbientQuery& query, double weight, double fraction, int level,

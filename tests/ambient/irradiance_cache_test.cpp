@@ -133,6 +133,54 @@ TEST(IrradianceCache, WithoutAStoreEveryPointSamplesItsOwnHemisphere) {
     EXPECT_EQ(divisions, 1 * 3);
 }
 
+/// Radiance L(d) = a + b·(d·x) from every direction, at distance 3: the
+/// cosine-weighted mean about unit n is Ē(n) = a + (2/3)·b·(n·x).
+struct LinearSky {
+    double a = 1, b = 0.5;
+    std::optional<AmbientSample> operator()(const Vec3& d, const AmbientSampleShare&) const {
+        return AmbientSample{Rgb::Grey(a + b * d.x), 3.0};
+    }
+};
+
+/// A texture or a mesh's smooth normal turns the shading normal away from the
+/// surface's, about which the hemisphere is sampled: the value is turned to
+/// it by the hemisphere's rotational gradient, with and without the cache and
+/// by either record method (Radiance's multambient() and extambient()). Here
+/// by 0.1 radian toward +x, under a sky brighter on that side: Ē rises from
+/// 1 to 1 + sin(0.1)/3 = 1.0333; the first-order turn gives 1.0333 too.
+TEST(IrradianceCache, AHemisphereIsTurnedToTheShadingNormal) {
+    const double theta = 0.1;
+    const LinearSky sky;
+    const double exact = sky.a + 2.0 / 3.0 * sky.b * std::sin(theta);
+    for (const RecordMethod method : {RecordMethod::Classic, RecordMethod::Hessian}) {
+        for (const bool cached : {true, false}) {
+            IrradianceSettings settings = Settings();
+            settings.method = method;
+            settings.superSamples = 128;
+            const IrradianceCache cache(settings, cached ? Store() : nullptr);
+            IrradianceThread thread;
+            IrradianceCounters counters;
+            Rng rng(5);
+            AmbientQuery q = At({0, 0, 0});
+            q.shadingNormal = Vec3(std::sin(theta), 0, std::cos(theta));
+            const auto r = cache.Evaluate(q, 1.0, thread, counters, rng, sky, NeverOccluded);
+            ASSERT_TRUE(r.value);
+            EXPECT_EQ(r.source, IrradianceResult::Source::Computed);
+            // Sampling noise and the gradient estimate: 0.3 % of the 3.3 % turn.
+            EXPECT_NEAR(r.value->g, exact, 3e-3)
+                << (method == RecordMethod::Classic ? "classic" : "Hessian")
+                << (cached ? ", new record" : ", -aa 0");
+            // Unturned, the same hemisphere gives the surface normal's 1.
+            Rng again(5);
+            IrradianceThread fresh;
+            const IrradianceCache same(settings, cached ? Store() : nullptr);
+            const auto flat = same.Evaluate(At({0, 0, 0}), 1.0, fresh, counters, again, sky,
+                                            NeverOccluded);
+            EXPECT_NEAR(flat.value->g, sky.a, 3e-3);
+        }
+    }
+}
+
 TEST(IrradianceCache, SamplesOfAHemisphereQueryTheNextLevel) {
     const IrradianceCache cache(Settings(), Store());
     IrradianceThread thread;
