@@ -175,7 +175,7 @@ double ExtrapolationFactor(const AmbientRecord& r, const Vec3& point, const Vec3
     const Vec3 u = r.uAxis;
     const Vec3 v = r.VAxis();
     return 1.0 + Dot(point - r.position, u * r.posGradient[0] + v * r.posGradient[1]) +
-           Dot(Cross(r.normal, shadingNormal), u * r.dirGradient[0] + v * r.dirGradient[1]);
+           RotationTerm(r.normal, shadingNormal, u * r.dirGradient[0] + v * r.dirGradient[1]);
 }
 
 std::size_t AmbientCache::size() const {

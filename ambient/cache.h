@@ -146,6 +146,13 @@ constexpr double kMaxExtrapolation = 20.0;
 /// with its own normal; a texture or a mesh's smooth normal turns it there.
 double ExtrapolationFactor(const AmbientRecord& r, const Vec3& point, const Vec3& shadingNormal);
 
+/// The rotational part of it: the relative change of a hemisphere's value
+/// sampled about `normal` when turned to `shadingNormal`, for its relative
+/// rotational gradient `dirGradient` (1/radian, tangent to `normal`).
+inline double RotationTerm(const Vec3& normal, const Vec3& shadingNormal, const Vec3& dirGradient) {
+    return Dot(Cross(normal, shadingNormal), dirGradient);
+}
+
 /// Radiance's -aw fallback ("dumbamb"): the ambient value `av` blended in log
 /// space with the cache's values, assuming 50 % average reflectance
 /// (radiance-notes.md §4.1 step 7). With `valueWeight <= 0` or no positive

@@ -130,8 +130,10 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
     // its own (`weight`).
     options.weight = weight * fraction;
     options.caching = store_ != nullptr;
-    const bool turned = TurnedNormal(query);
-    options.gradients = turned;
+    // -aa 0 at a textured point: the rotational gradient turns the value
+    // (records have their gradients anyway).
+    const bool turnHere = level < 0 && TurnedNormal(query);
+    options.gradients = turnHere;
     // The level's own method (-ah); -aa 0 hemispheres (level -1) take the first level's.
     const bool hessian = settings_.MethodAt(level) == RecordMethod::Hessian;
     // Hessian records below the first level take extra samples only where
@@ -165,7 +167,7 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
         if (h.anySample && level >= 0) {
             out.record = MakeHessianRecord(h, level, weight, settings_.accuracy, store_->limits());
         }
-        if (turned && !out.record) {
+        if (turnHere) {
             if (const auto g = HessianRotationalGradient(h, h.frame.u, h.frame.v)) {
                 out.dirGradient = h.frame.u * (*g)[0] + h.frame.v * (*g)[1];
             }
@@ -173,7 +175,7 @@ IrradianceCache::Sampled IrradianceCache::Sample(const AmbientQuery& query, doub
     } else {
         const Hemisphere h = SampleHemisphere(query.normal, options, rng, sample);
         if (h.anySample) out.value = h.value;
-        if (turned) out.dirGradient = h.dirGradient;
+        if (turnHere) out.dirGradient = h.dirGradient;
         if (h.anySample && level >= 0) {
             out.record = MakeClassicRecord(query.point, query.normal, h, level, weight,
                                            store_->limits());
@@ -211,7 +213,7 @@ IrradianceResult IrradianceCache::Evaluate(const AmbientQuery& levelFree,
         if (!h.value) return {};
         // Turned to the shading normal by the rotational gradient, unless
         // that would take it below 5 % (Radiance's multambient()).
-        const double f = 1.0 + Dot(Cross(query.normal, query.shadingNormal), h.dirGradient);
+        const double f = 1.0 + RotationTerm(query.normal, query.shadingNormal, h.dirGradient);
         return {f >= kMinExtrapolation ? *h.value * f : *h.value, Source::Computed};
     }
     ++counters.ambientLookups;

@@ -241,9 +241,9 @@ private:
     struct Sampled {
         std::optional<Rgb> value;
         std::optional<AmbientRecord> record;
-        /// Without a record: the relative rotational gradient (1/radian,
-        /// tangent to the normal sampled about) when the query's shading
-        /// normal turns away from it, else zero.
+        /// -aa 0 only: the relative rotational gradient (1/radian, tangent
+        /// to the normal sampled about) when the query's shading normal
+        /// turns away from it, else zero.
         Vec3 dirGradient;
     };
     /// `fraction` scales the hemisphere's sample counts (not the record's weight).

@@ -286,7 +286,6 @@ bool IsTransparentType(MaterialType type);
 /// light, illum, glow, spotlight.
 bool IsLightType(MaterialType type);
 
-
 /// Flat polygon, vertices counter-clockwise seen from the front (§2.4).
 struct Polygon {
     std::vector<Vec3> vertices;  // n >= 3, a repeated closing vertex removed

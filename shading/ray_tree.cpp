@@ -107,40 +107,36 @@ bool RayTree::HitDistantSource(TracedRay& ray) const {
     return true;
 }
 
-void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
+RayTree::Met RayTree::Cast(ThreadState& ts, TracedRay& ray) const {
     ++ts.stats.raysTraced;
-    ray.rcol = Rgb();
-    ray.mcol = Rgb();
     if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax, ray.Leaving())) {
         ray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
-        Shade(ts, ray);
-    } else if (ray.rmax > 0) {
+        return Met::Surface;
+    }
+    if (ray.rmax > 0) {
         // -ld: nothing before the clipping distance; no distant-source test.
         ray.rot = kFhuge;
         ray.rop = ray.org + ray.dir * ray.rmax;
-    } else if (HitDistantSource(ray)) {
-        ShadeDistantSource(ts, ray);
-    } else {
-        ray.rot = kFhuge;
-        ray.rop = ray.org;
+        return Met::Nothing;
+    }
+    if (HitDistantSource(ray)) return Met::DistantSource;
+    ray.rot = kFhuge;
+    ray.rop = ray.org;
+    return Met::Nothing;
+}
+
+void RayTree::Trace(ThreadState& ts, TracedRay& ray) const {
+    ray.rcol = Rgb();
+    ray.mcol = Rgb();
+    switch (Cast(ts, ray)) {
+        case Met::Surface: Shade(ts, ray); break;
+        case Met::DistantSource: ShadeDistantSource(ts, ray); break;
+        case Met::Nothing: break;
     }
     // Trace output shows the value before the medium acts on it, as
     // Radiance's raytrace() reports before rayparticipate().
     Report(ts, ray);
     Participate(ts, ray);
-}
-
-void RayTree::Cast(ThreadState& ts, TracedRay& ray) const {
-    ++ts.stats.raysTraced;
-    if (auto hit = s_.core.Intersect(ray.org, ray.dir, ray.rmax, ray.Leaving())) {
-        ray.SetHit(*hit, s_.scene.PatternSpace(hit->instance));
-    } else if (ray.rmax > 0) {
-        ray.rot = kFhuge;  // clipped by -ld: Radiance's raycast() forgets the aft plane
-        ray.rop = ray.org + ray.dir * ray.rmax;
-    } else if (!HitDistantSource(ray)) {
-        ray.rot = kFhuge;
-        ray.rop = ray.org;
-    }
 }
 
 void RayTree::ParticipateIn(ThreadState& ts, const Medium& medium, TracedRay& ray) const {

@@ -44,9 +44,11 @@ public:
                     const Rgb* coef) const;
     /// Traces and shades `ray` (raytrace()): closest hit, distant sources, trace callback.
     void Trace(ThreadState& ts, TracedRay& ray) const;
+    /// What Cast() found.
+    enum class Met { Surface, DistantSource, Nothing };
     /// Radiance's raycast(): the first intersection only (or the distant
-    /// source the ray points at), nothing shaded.
-    void Cast(ThreadState& ts, TracedRay& ray) const;
+    /// source the ray points at), nothing shaded; Trace() shades what it met.
+    Met Cast(ThreadState& ts, TracedRay& ray) const;
     /// Shades a ray that hit `ray.surface` (rayshade()); with -i, Lamb replaces materials.
     void Shade(ThreadState& ts, TracedRay& ray) const;
     /// Pass-through (raytrans()): continues the ray unchanged past the surface.
