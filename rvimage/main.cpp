@@ -9,10 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "core/huge_pages.h"
 #include "rtrace/scene_evaluator.h"
 #include "rvimage/rvimage.h"
 
 int main(int argc, char** argv) {
+    // Heap blocks from huge pages: on the virtual machines lazyrad is measured
+    // on, each 4 KiB page's first touch costs some 10-20 µs (docs/measured-choices.md).
+    rt::ReserveHeapInHugePages(rt::kProgramHeapReserve);
     std::vector<std::string> args(argv, argv + argc);
     return rt::RunRvimage(args, std::cout, std::cerr, rt::ProcessEnvironment(),
                           isatty(STDERR_FILENO) != 0);

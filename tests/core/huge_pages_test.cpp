@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 #include <sys/mman.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <cstdint>
 #include <cstdlib>
@@ -30,8 +33,8 @@ std::string ThpMode() {
                : line.substr(open + 1, close - open - 1);
 }
 
-/// The VmFlags of the mapping holding `p` in /proc/self/smaps ("" if none).
-std::string VmFlagsOf(const void* p) {
+/// A field's line of the mapping holding `p` in /proc/self/smaps ("" if none).
+std::string SmapsLineOf(const void* p, const std::string& field) {
     const auto a = reinterpret_cast<std::uintptr_t>(p);
     std::ifstream f("/proc/self/smaps");
     bool inside = false;
@@ -44,9 +47,30 @@ std::string VmFlagsOf(const void* p) {
             inside = a >= lo && a < hi;
             continue;
         }
-        if (inside && line.rfind("VmFlags:", 0) == 0) return line;
+        if (inside && line.rfind(field, 0) == 0) return line;
     }
     return "";
+}
+
+std::string VmFlagsOf(const void* p) { return SmapsLineOf(p, "VmFlags:"); }
+
+/// Kilobytes of the mapping holding `p` backed by transparent huge pages.
+long AnonHugeKbOf(const void* p) {
+    std::istringstream line(SmapsLineOf(p, "AnonHugePages:"));
+    std::string name;
+    long kb = -1;
+    line >> name >> kb;
+    return kb;
+}
+
+/// A counter of /proc/vmstat (-1 if absent).
+long VmStat(const std::string& name) {
+    std::ifstream f("/proc/vmstat");
+    std::string key;
+    long value = 0;
+    while (f >> key >> value)
+        if (key == name) return value;
+    return -1;
 }
 
 TEST(HugePages, LargeRangeIsAdvised) {
@@ -94,6 +118,62 @@ TEST(HugePages, ReservedHeapIsAdvised) {
     EXPECT_NE(VmFlagsOf(blocks.back()).find(" hg"), std::string::npos);
     EXPECT_EQ(blocks[100][3999], 100);
     for (char* b : blocks) std::free(b);
+#endif
+}
+
+#if !defined(__SANITIZE_ADDRESS__) && defined(__GLIBC__)
+/// Reserves 8 MiB, then checks that a block larger than all memory the heap
+/// held free before is cut from a whole huge page: the reservation starts
+/// the top chunk on a 2 MiB boundary (glibc puts a chunk's 16-byte header
+/// right before the block), and nothing wrote to that page before it was
+/// advised. Without the filler the head of the reserve, 4 KiB pages, would
+/// come first.
+void ExpectReserveStartsOnAWholeHugePage() {
+    const std::size_t freeBefore = mallinfo2().fordblks;
+    ASSERT_TRUE(ReserveHeapInHugePages(std::size_t{8} << 20));
+    auto* block = static_cast<char*>(std::malloc(freeBefore + 4096));
+    ASSERT_NE(block, nullptr);
+    constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+    EXPECT_EQ((reinterpret_cast<std::uintptr_t>(block) - 16) % kHuge, 0u);
+    const long fallbacks = VmStat("thp_fault_fallback");
+    std::memset(block, 3, freeBefore + 4096);  // ordinary memory
+    EXPECT_EQ(block[freeBefore], 3);
+    if (ThpMode() == "madvise" || ThpMode() == "always") {
+        EXPECT_NE(VmFlagsOf(block).find(" hg"), std::string::npos);
+        // A page written before the advice makes the kernel give its 2 MiB
+        // range 4 KiB pages without trying a huge one; when it tries and
+        // has none to give, it counts a fallback.
+        // Every 2 MiB page the block reaches is whole (the reserve is 8 MiB).
+        const long pages = static_cast<long>((freeBefore + 4096 + 16 + kHuge - 1) / kHuge);
+        if (VmStat("thp_fault_fallback") == fallbacks) {
+            EXPECT_GE(AnonHugeKbOf(block), 2048 * pages);
+        }
+    }
+    std::free(block);
+}
+#endif
+
+TEST(HugePages, ReservedHeapStartsOnAWholeHugePage) {
+#if defined(__SANITIZE_ADDRESS__) || !defined(__GLIBC__)
+    GTEST_SKIP() << "not glibc's malloc";
+#else
+    ExpectReserveStartsOnAWholeHugePage();
+#endif
+}
+
+TEST(HugePages, ReservedHeapStartsOnAWholeHugePageWhenMegabytesAreFree) {
+#if defined(__SANITIZE_ADDRESS__) || !defined(__GLIBC__)
+    GTEST_SKIP() << "not glibc's malloc";
+#else
+    // 3 MiB freed at the top of the heap and kept: the reservation's own
+    // growth then writes a header past the first 2 MiB boundary.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    void* freed = std::malloc(std::size_t{3} << 20);
+    ASSERT_NE(freed, nullptr);
+    std::free(freed);
+    ASSERT_GE(mallinfo2().fordblks, std::size_t{3} << 20);
+    ExpectReserveStartsOnAWholeHugePage();
 #endif
 }
 
