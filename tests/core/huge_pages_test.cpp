@@ -54,25 +54,6 @@ std::string SmapsLineOf(const void* p, const std::string& field) {
 
 std::string VmFlagsOf(const void* p) { return SmapsLineOf(p, "VmFlags:"); }
 
-/// Kilobytes of the mapping holding `p` backed by transparent huge pages.
-long AnonHugeKbOf(const void* p) {
-    std::istringstream line(SmapsLineOf(p, "AnonHugePages:"));
-    std::string name;
-    long kb = -1;
-    line >> name >> kb;
-    return kb;
-}
-
-/// A counter of /proc/vmstat (-1 if absent).
-long VmStat(const std::string& name) {
-    std::ifstream f("/proc/vmstat");
-    std::string key;
-    long value = 0;
-    while (f >> key >> value)
-        if (key == name) return value;
-    return -1;
-}
-
 TEST(HugePages, LargeRangeIsAdvised) {
     if (ThpMode() != "madvise" && ThpMode() != "always") GTEST_SKIP() << "no transparent huge pages";
     constexpr std::size_t kBytes = std::size_t{8} << 20;
@@ -122,6 +103,25 @@ TEST(HugePages, ReservedHeapIsAdvised) {
 }
 
 #if !defined(__SANITIZE_ADDRESS__) && defined(__GLIBC__)
+/// Kilobytes of the mapping holding `p` backed by transparent huge pages.
+long AnonHugeKbOf(const void* p) {
+    std::istringstream line(SmapsLineOf(p, "AnonHugePages:"));
+    std::string name;
+    long kb = -1;
+    line >> name >> kb;
+    return kb;
+}
+
+/// A counter of /proc/vmstat (-1 if absent).
+long VmStat(const std::string& name) {
+    std::ifstream f("/proc/vmstat");
+    std::string key;
+    long value = 0;
+    while (f >> key >> value)
+        if (key == name) return value;
+    return -1;
+}
+
 /// Reserves 8 MiB, then checks that a block larger than all memory the heap
 /// held free before is cut from a whole huge page: the reservation starts
 /// the top chunk on a 2 MiB boundary (glibc puts a chunk's 16-byte header
