@@ -11,8 +11,7 @@
 #include "rtrace/scene_evaluator.h"
 
 int main(int argc, char** argv) {
-    // Heap blocks from huge pages: on the virtual machines lazyrad is measured
-    // on, each 4 KiB page's first touch costs some 10-20 µs (docs/measured-choices.md).
+    // Heap blocks from huge pages from the start (core/huge_pages.h).
     rt::ReserveHeapInHugePages(rt::kProgramHeapReserve);
     // Run() buffers its own output; iostreams need not track stdio.
     std::ios::sync_with_stdio(false);

@@ -14,8 +14,7 @@
 #include "rvimage/rvimage.h"
 
 int main(int argc, char** argv) {
-    // Heap blocks from huge pages: on the virtual machines lazyrad is measured
-    // on, each 4 KiB page's first touch costs some 10-20 µs (docs/measured-choices.md).
+    // Heap blocks from huge pages from the start (core/huge_pages.h).
     rt::ReserveHeapInHugePages(rt::kProgramHeapReserve);
     std::vector<std::string> args(argv, argv + argc);
     return rt::RunRvimage(args, std::cout, std::cerr, rt::ProcessEnvironment(),
