@@ -30,8 +30,10 @@ python3 "$root/bench/make_office.py" > office.rad
   printf 'skyfunc glow groundglow 0 0 4 1 1 1 0\ngroundglow source ground 0 0 4 0 0 -1 180\n'
 } > sky.rad
 RAYPATH=.:$rad/lib "$rad/bin/oconv" -f sky.rad office.rad > office.oct 2> /dev/null
+# The first 40 points (sed reads to the end: head would close the pipe early and
+# stop the script under pipefail when awk is still writing).
 awk 'BEGIN { for (i = 0; i < 26; i++) for (j = 0; j < 15; j++)
-  printf "%.2f %.2f 0.8 0 0 1\n", 0.8 + 1.5 * i, 1.0 + 1.5 * j }' | head -40 > chunk.pts
+  printf "%.2f %.2f 0.8 0 0 1\n", 0.8 + 1.5 * i, 1.0 + 1.5 * j }' | sed -n 1,40p > chunk.pts
 : > none.pts
 echo "office: $(grep -c ' polygon ' office.rad) polygons, frozen octree $(stat -c %s office.oct) bytes"
 run() {  # description options points
