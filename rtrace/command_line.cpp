@@ -255,7 +255,7 @@ int ParsePhotonMap(RtraceOptions& o, std::span<const std::string> v, const Warni
 
 int ParsePhotonRadius(RtraceOptions& o, std::span<const std::string> v, const WarningSink&) {
     if (v.empty() || !IsRealArgument(v[0]) || (o.photonMaxRadius = ToReal(v[0])) <= 0)
-        ThrowUserError("invalid max photon search radius coefficient");
+        ThrowUserError("invalid max photon search radius");
     return 1;
 }
 
@@ -452,7 +452,11 @@ const OptionRow* FindRow(std::string_view arg) {
                 if (arg.starts_with(name)) return &row;
                 break;
             case ValueKind::Toggle:
-                if (arg.starts_with(name) && arg.size() <= name.size() + 1) return &row;
+                // Radiance's check_bool() reads one character after the name
+                // and ignores the rest (-I+, -Iyes and -h++ are all "on").
+                if (arg.starts_with(name) &&
+                    (arg.size() == name.size() || ToggleSuffix(arg.substr(name.size(), 1))))
+                    return &row;
                 break;
             default:
                 if (arg == name) return &row;
@@ -475,7 +479,7 @@ int ApplyRow(const OptionRow& row, RtraceOptions& o, std::span<const std::string
                 return 0;
             }
             const std::optional<bool> on =
-                ToggleSuffix(std::string_view(arg).substr(row.info.name.size()));
+                ToggleSuffix(std::string_view(arg).substr(row.info.name.size(), 1));
             if (!on) return -1;
             field = *on;
             return 0;

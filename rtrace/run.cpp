@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/conventions.h"
 #include "core/error.h"
 #include "program/arguments.h"
 #include "program/shell.h"
@@ -153,7 +154,8 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
             if (!writer.Flush()) ThrowSystemError("write error");
             nextFlush = flushInterval;
         } else {
-            const double rmax = (opt.limitDistance && !immediate) ? length : 0.0;
+            // Radiance takes an aft distance of FTINY or less as no limit.
+            const double rmax = (opt.limitDistance && !immediate && length > kFtiny) ? length : 0.0;
             pending.push_back({ray->origin, ray->direction / length, rmax, index});
             // A batch ends where a -x flush falls, so output is as prompt.
             if (pending.size() >= batchLimit ||

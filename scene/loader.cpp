@@ -2,6 +2,8 @@
 #include "scene/loader.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -200,6 +202,15 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
             f.open(file, std::ios::binary);
             if (!f) continue;  // reported below, with the other open errors
             in = &f;
+            // An empty file as the only scene is what a failed `oconv > x.oct`
+            // leaves: Radiance's rtrace stops on it, where lazyrad would read an
+            // empty scene and answer every ray with black.
+            std::error_code ec;
+            if (files.size() == 1 && std::filesystem::is_regular_file(file, ec) &&
+                std::filesystem::file_size(file, ec) == 0 && !ec) {
+                const std::string shown = PrintableWord(file);
+                ThrowUserError("(" + shown + "): not an octree");
+            }
         }
         if (!LooksLikeOctree(*in)) {
             if (command) {
@@ -233,8 +244,17 @@ Scene LoadScene(const std::vector<std::string>& files, const SceneLoadOptions& o
             if (std::filesystem::is_directory(file, ec)) {
                 ThrowSystemError("cannot open scene file \"" + file + "\": is a directory");
             }
+            errno = 0;
             std::ifstream in(file, std::ios::binary);
-            if (!in) ThrowSystemError("cannot open scene file \"" + file + "\"");
+            if (!in) {
+                // Radiance's words for its one scene argument, the octree; its
+                // system errors end with the C library's reason.
+                const int reason = errno;
+                ThrowSystemError(std::string(files.size() == 1 ? "cannot open octree file \""
+                                                               : "cannot open scene file \"") +
+                                 file + "\"" +
+                                 (reason != 0 ? std::string(": ") + std::strerror(reason) : ""));
+            }
             ReadSceneObjects(in, file, options, warn, add);
             if (in.bad()) ThrowSystemError("error reading scene file \"" + file + "\"");
         }

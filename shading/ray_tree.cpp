@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/error.h"
 #include "shading/materials.h"
 
 namespace rt {
@@ -44,6 +45,13 @@ double RayTree::MediumImportance(const TracedRay& parent) {
 
 bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
                          unsigned type, const Rgb* coef) const {
+    // Radiance's rayorigin(): Russian roulette (-lr <= 0) with no weight to
+    // roll against (-lw <= 0) stops the run at the first ray that carries a
+    // coefficient, a reflected, transmitted or hemisphere ray, never a shadow ray.
+    if (s_.shading.limits.reflections <= 0 && s_.shading.limits.weight <= 0 &&
+        (coef != nullptr || type == kAmbientRay) && !(type & kShadowRay)) {
+        ThrowUserError("zero ray weight in Russian roulette");
+    }
     child.org = parent.rop;
     child.parent = &parent;
     child.rtype = type;

@@ -3,8 +3,8 @@
 // Stiff cases, parameters (issue "Numerical stability"): the cornell box at
 // three floor points with extreme ambient and ray-limit settings — -ad 1 and
 // 100000, -ab 0 .. 50, -aa 0 .. 2, -ar 0 and 1000000, -lw 0 and 1, -as
-// larger than -ad, and `-lw 0 -ab 8 -ad 8` (which real Radiance never
-// finishes). No NaN, Inf or negative number, ever, and exit status 0. Where
+// larger than -ad, and `-lr 8 -lw 0 -ab 8 -ad 8` (no weight limit at all).
+// No NaN, Inf or negative number, ever, and exit status 0. Where
 // Radiance 5.4a clamps or rejects a value (ambient.c setambres/setambacc and
 // multambient, the integer check of its option parser;
 // /work/shared/docs/radiance-notes.md §1.1, §4.1, §4.2, §4.10), lazyrad must
@@ -88,22 +88,23 @@ INSTANTIATE_TEST_SUITE_P(
                       Sweep{"ab50_nocache", "-ab 50 -aa 0 -ad 8 -as 0"}, Sweep{"aa0", "-aa 0"},
                       Sweep{"aa01", "-aa .1"}, Sweep{"aa1", "-aa 1"}, Sweep{"aa2", "-aa 2"},
                       Sweep{"ar0", "-ar 0"}, Sweep{"ar1000000", "-ar 1000000"},
-                      Sweep{"lw0", "-lw 0"}, Sweep{"lw1", "-lw 1"},
+                      Sweep{"lw0", "-lw 0 -lr 10"}, Sweep{"lw1", "-lw 1"},
                       Sweep{"as_over_ad", "-ad 16 -as 1024"}),
     [](const ::testing::TestParamInfo<Sweep>& sweep) { return std::string(sweep.param.name); });
 
-/// The issue's case, all other settings at their defaults (-as 512, -aa .1,
-/// -ar 256): Radiance 5.4a never finishes it. lazyrad finishes one point in
-/// seconds, nearly all of it spent filling the cache (about ten thousand
-/// records at each of levels 2-7); the two-minute limit leaves room for
-/// sanitizer builds and busy machines.
+/// No weight limit and eight bounces, the other settings at their defaults
+/// (-as 512, -aa .1, -ar 256). lazyrad finishes one point in seconds, nearly
+/// all of it spent filling the cache (about ten thousand records at each of
+/// levels 2-7); the two-minute limit leaves room for sanitizer builds and
+/// busy machines. (-lw 0 needs -lr > 0: with Russian roulette it is
+/// Radiance's fatal error, ZeroWeightWithRussianRouletteIsAnError.)
 TEST(ParameterLimits, ZeroWeightLimitFinishes) {
     const std::string point = WriteTempFile("one.pts", "2.5040 3.0600 0.001 0 0 1\n");
     const auto start = std::chrono::steady_clock::now();
-    const RtraceRun run = RunRtrace("-I -n 1 -seed 1 -lw 0 -ab 8 -ad 8 " + kCornell, point, 120);
+    const RtraceRun run = RunRtrace("-I -n 1 -seed 1 -lr 8 -lw 0 -ab 8 -ad 8 " + kCornell, point, 120);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("-lw 0 -ab 8 -ad 8: %.1f s\n", seconds);
+    std::printf("-lr 8 -lw 0 -ab 8 -ad 8: %.1f s\n", seconds);
     ASSERT_EQ(run.status, 0) << "124 means it did not finish in 120 s\n" << run.err;
     const Rows rows = run.Numbers();
     ASSERT_TRUE(FiniteNonNegative(rows, 1, 3)) << run.out;
@@ -111,6 +112,23 @@ TEST(ParameterLimits, ZeroWeightLimitFinishes) {
     // 40, green); six more bounces add some 8 % (0.946 measured).
     EXPECT_GT(rows[0][1], 0.85);
     EXPECT_LT(rows[0][1], 1.1);
+}
+
+/// Radiance 5.4a's rayorigin(): with Russian roulette (-lr <= 0, the default
+/// -10) a weight limit of 0 or less stops the run at the first ray that
+/// carries a coefficient (here the first hemisphere ray), as real Radiance
+/// does on `rtrace -I -lw 0 -ab 8 -ad 8`; without such rays (-ab 0 in a
+/// box of plastic) the run goes on.
+TEST(ParameterLimits, ZeroWeightWithRussianRouletteIsAnError) {
+    const std::string point = WriteTempFile("one.pts", "2.5040 3.0600 0.001 0 0 1\n");
+    for (const char* options : {"-I -lw 0 -ab 8 -ad 8 ", "-I -lw -1 -lr 0 -ab 1 -ad 8 "}) {
+        const RtraceRun run = RunRtrace(std::string("-h ") + options + kCornell, point, 60);
+        EXPECT_EQ(run.status, 1) << options;
+        EXPECT_EQ(run.err, "rtrace: fatal - zero ray weight in Russian roulette\n") << options;
+    }
+    const RtraceRun direct = RunRtrace("-h -I -lw 0 -ab 0 " + kCornell, point, 60);
+    EXPECT_EQ(direct.status, 0) << direct.err;
+    EXPECT_EQ(direct.err, "");
 }
 
 // ----- where Radiance clamps or rejects -----

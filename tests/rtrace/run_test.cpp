@@ -131,6 +131,17 @@ TEST(RtraceRun, PassesNormalisedDirectionsLimitsAndSeeds) {
     EXPECT_EQ(s.options.shading.seed, 7u);
 }
 
+// -ld: Radiance takes a direction of length FTINY (1e-6) or less as no
+// limit (its rayorigin() treats rmax <= FTINY as none), and only the length
+// matters, not how small the components are.
+TEST(RtraceRun, LimitDistanceIgnoresTinyDirections) {
+    FakeState s;
+    Result r = RunWith({"-h", "-ld", "x.rad"}, "0 0 0 0 0 1e-7\n0 0 0 0 0 1e-6\n0 0 0 0 0 2e-6\n",
+                       &s);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(s.rmax, (std::vector<double>{0, 0, 2e-6}));
+}
+
 // Output that needs no value: the renderer only intersects (Radiance's
 // castonly) and gets no ambient calculation and no ambient file.
 TEST(RtraceRun, CastOnlyOutputLeavesTheAmbientCalculationOut) {

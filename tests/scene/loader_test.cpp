@@ -112,11 +112,27 @@ TEST(LoadScene, SeveralFilesInOrder) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(LoadScene, AnEmptyFileAloneIsNotAnOctree) {
+    // What a failed `oconv > x.oct` leaves; Radiance 5.4a's rtrace: "fatal -
+    // (empty.oct): not an octree". Among other files it is only warned about
+    // (SeveralFilesInOrder).
+    const auto dir = std::filesystem::temp_directory_path() / "rt_scene_loader_empty";
+    std::filesystem::create_directories(dir);
+    const std::string empty = (dir / "empty.oct").string();
+    std::ofstream(empty).close();
+    EXPECT_EQ(testing::ErrorMessage([&] { Load({empty}); }), "(" + empty + "): not an octree");
+    std::filesystem::remove_all(dir);
+}
+
 TEST(LoadScene, UnreadableFileIsSystemError) {
     const std::string missing = "/nonexistent/dir/scene.rad";
     const std::string message =
         testing::ErrorMessage([&] { Load({missing}); }, Error::Kind::System);
-    EXPECT_EQ(message, "cannot open scene file \"" + missing + "\"");
+    // Radiance 5.4a's words for rtrace's one scene argument.
+    EXPECT_EQ(message, "cannot open octree file \"" + missing + "\": No such file or directory");
+    const std::string other = testing::ErrorMessage(
+        [&] { Load({missing, missing}); }, Error::Kind::System);
+    EXPECT_EQ(other, "cannot open scene file \"" + missing + "\": No such file or directory");
     const std::string directory = testing::ErrorMessage(
         [&] { Load({std::filesystem::temp_directory_path().string()}); }, Error::Kind::System);
     EXPECT_NE(directory.find("is a directory"), std::string::npos);
