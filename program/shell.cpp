@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/quote.h"
+#include "program/signals.h"
 
 namespace rt {
 
@@ -38,6 +39,7 @@ bool ProgramShell::OpenErrorFile(const std::string& path, int pid,
     errorFile_ << "**************\n*** PID " << pidText << ": " << QuoteWords(args) << "\n\n";
     errorFile_.flush();
     messages_ = &errorFile_;
+    ReportFatalSignalsTo(path);
     return true;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "program/signals.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -33,6 +34,8 @@ constexpr std::size_t kLineBytes = 256;
 char g_lines[kFatalSignals.size()][kLineBytes];
 std::size_t g_lengths[kFatalSignals.size()];
 volatile std::sig_atomic_t g_caught = 0;
+bool g_installed = false;
+volatile std::sig_atomic_t g_fd = STDERR_FILENO;
 
 extern "C" void OnFatalSignal(int number) {
     if (g_caught) _exit(number);  // two signals and we're gone (Radiance's words)
@@ -40,7 +43,7 @@ extern "C" void OnFatalSignal(int number) {
     for (std::size_t i = 0; i < kFatalSignals.size(); ++i) {
         if (kFatalSignals[i].number == number) {
             // Nothing is left to do if standard error is gone too.
-            [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, g_lines[i], g_lengths[i]);
+            [[maybe_unused]] const ssize_t written = write(g_fd, g_lines[i], g_lengths[i]);
             break;
         }
     }
@@ -69,6 +72,13 @@ void ReportFatalSignals(std::string_view program) {
         sigemptyset(&action.sa_mask);
         sigaction(kFatalSignals[i].number, &action, nullptr);
     }
+    g_installed = true;
+}
+
+void ReportFatalSignalsTo(const std::string& path) {
+    if (!g_installed) return;
+    const int fd = open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd >= 0) g_fd = fd;  // kept open to the end: the handler may need it any time
 }
 
 }  // namespace rt

@@ -8,11 +8,17 @@
 // tests that run a program in process do not call it.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 namespace rt {
 
 /// Installs the handlers; `program` starts each message (rt::ProgramName()).
 void ReportFatalSignals(std::string_view program);
+
+/// Sends the messages to the end of file `path` instead of standard error,
+/// as Radiance's do after `-e path`. Does nothing unless ReportFatalSignals()
+/// ran (in a test's process) or the file cannot be opened.
+void ReportFatalSignalsTo(const std::string& path);
 
 }  // namespace rt

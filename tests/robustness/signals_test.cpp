@@ -7,6 +7,7 @@
 // run, and `rtrace ... | head -c 10` on a long output.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -23,21 +24,34 @@ using rt::testing::RunShell;
 
 const std::string kCornell = kSourceDir + "/scenes/cornell/cornell.rad";
 
-TEST(FatalSignals, TerminateIsReportedWithExitStatusThree) {
+/// Runs rtrace with `options` on the cornell box, gives it one ray and waits
+/// for its answer (-x 1 flushes it: the program has started and installed
+/// its handlers), then terminates it while it waits for more rays. Returns
+/// the exit status as the shell printed it; stderr goes to `err`.
+std::string TerminateMidRun(const std::string& options, const std::string& err) {
     const std::string fifo = RobustnessTempPath("rays.fifo");
     const std::string out = RobustnessTempPath("term.out");
-    const std::string err = RobustnessTempPath("term.err");
-    // One ray in, its answer flushed out (-x 1): the program has started and
-    // installed its handlers; then it waits for more rays and is terminated.
     const std::string script =
-        "rm -f " + fifo + "; mkfifo " + fifo + "; " + kRtrace + " -h -ab 0 -x 1 " + kCornell +
-        " < " + fifo + " > " + out + " 2> " + err + " & p=$!; exec 3> " + fifo +
-        "; echo '2.78 -5 2.74 0 1 0' >&3; i=0; while [ ! -s " + out +
-        " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; kill -TERM $p; wait $p; "
+        "rm -f " + fifo + " " + out + "; mkfifo " + fifo + "; " + kRtrace + " -h -ab 0 -x 1 " +
+        options + " " + kCornell + " < " + fifo + " > " + out + " 2> " + err +
+        " & p=$!; exec 3> " + fifo + "; echo '2.78 -5 2.74 0 1 0' >&3; i=0; while [ ! -s " +
+        out + " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; kill -TERM $p; wait $p; "
         "echo $?; exec 3>&-; rm -f " + fifo;
-    const rt::testing::ShellResult r = RunShell(script);
-    EXPECT_EQ(r.out, "3\n");
+    return RunShell(script).out;
+}
+
+TEST(FatalSignals, TerminateIsReportedWithExitStatusThree) {
+    const std::string err = RobustnessTempPath("term.err");
+    EXPECT_EQ(TerminateMidRun("", err), "3\n");
     EXPECT_EQ(ReadText(err), "rtrace: signal - Terminate\n");
+    // With -e the message goes to the end of that file, after the banner.
+    const std::string file = RobustnessTempPath("term.e");
+    std::remove(file.c_str());
+    EXPECT_EQ(TerminateMidRun("-e " + file, err), "3\n");
+    EXPECT_EQ(ReadText(err), "");
+    const std::string messages = ReadText(file);
+    EXPECT_TRUE(messages.starts_with("**************\n*** PID ")) << messages;
+    EXPECT_TRUE(messages.ends_with("\n\nrtrace: signal - Terminate\n")) << messages;
 }
 
 TEST(FatalSignals, BrokenPipeIsReportedWithExitStatusThree) {
