@@ -403,8 +403,9 @@ RayResult RayTree::TraceInput(ThreadState& ts, const Vec3& org, const Vec3& dir,
         ray.rod = 1.0;
         ray.irradianceHit = true;
         ray.lambertian = true;
+        // Shaded directly (Radiance calls the Lambertian's shading function,
+        // not raytrace()), so trace output (-ot, -oT) shows no line for it.
         ShadeNormal(*this, ts, ray, s_.lambertian);
-        Report(ts, ray);
         return withOutcome(MakeResult(ts, ray));
     }
     if (s_.shading.castOnly) {

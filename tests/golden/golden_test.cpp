@@ -312,6 +312,17 @@ TEST(Golden, TraceReportsBlockedShadowRays) {
                    data + "cornell_otvsL.txt");
 }
 
+/// -I with trace output (tests/data/golden/make_irradiance_trace.sh): a
+/// sensor is shaded without raytrace(), so Radiance's trace has no line for
+/// it, and lit sensors show none at all. lazyrad used to print a depth-0
+/// line for every sensor.
+TEST(Golden, IrradianceSensorsHaveNoTraceLineOfTheirOwn) {
+    const std::string data = kSource + "/tests/data/golden/";
+    CompareNumbers("-I -ovtvsL", kRtrace + " -h -I -ab 0 -dj 0 -dt 0 -ss 0 -u- -ovtvsL " + kSource +
+                                     "/scenes/cornell/cornell.rad < " + data + "cornell_sensors.pts",
+                   data + "cornell_I_ovtvsL.txt");
+}
+
 /// -oT in the daylit room (tests/data/golden/make_lengths.sh): a shadow ray
 /// that reaches the sun unobstructed is reported as the sun (Radiance traces
 /// it when -oT has it follow every source). One process per ray, as the
