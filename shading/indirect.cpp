@@ -53,9 +53,14 @@ Rgb IndirectLight::Ambient(ThreadState& ts, const Rgb& coefficient, const Traced
     query.normal = ray.ron;
     query.shadingNormal = normal;
     query.rayWeight = ray.rweight;
+    // Hemisphere rays carry a coefficient in Radiance, so Russian roulette
+    // with no weight limit stops the run at the first of them.
+    const bool zeroWeightRoulette =
+        s_.shading.limits.reflections <= 0 && s_.shading.limits.weight <= 0;
     // One hemisphere ray (Radiance's ambsample()).
     const auto trace = [&](const Vec3& dir,
                            const AmbientSampleShare& share) -> std::optional<AmbientSample> {
+        if (zeroWeightRoulette) ThrowZeroWeightRoulette();
         // With the cache every sample ray weighs half its parent; without
         // it, each carries its true share of the coefficient.
         const Rgb sampleCoef = share.caching ? Rgb::Grey(kAverageReflectance)

@@ -43,15 +43,16 @@ double RayTree::MediumImportance(const TracedRay& parent) {
     return re > 92.0 ? 0.0 : std::exp(-re);
 }
 
-bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
-                         unsigned type, const Rgb* coef) const {
+[[noreturn]] void ThrowZeroWeightRoulette() {
     // Radiance's rayorigin(): Russian roulette (-lr <= 0) with no weight to
     // roll against (-lw <= 0) stops the run at the first ray that carries a
-    // coefficient, a reflected, transmitted or hemisphere ray, never a shadow ray.
-    if (s_.shading.limits.reflections <= 0 && s_.shading.limits.weight <= 0 &&
-        (coef != nullptr || type == kAmbientRay) && !(type & kShadowRay)) {
-        ThrowUserError("zero ray weight in Russian roulette");
-    }
+    // coefficient: a reflected or transmitted ray here, a hemisphere ray in
+    // IndirectLight::Ambient, never a shadow ray.
+    ThrowUserError("zero ray weight in Russian roulette");
+}
+
+bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& parent,
+                         unsigned type, const Rgb* coef) const {
     child.org = parent.rop;
     child.parent = &parent;
     child.rtype = type;
@@ -80,6 +81,7 @@ bool RayTree::StartChild(ThreadState& ts, TracedRay& child, const TracedRay& par
     const int lr = s_.shading.limits.reflections;
     const double lw = s_.shading.limits.weight;
     if (lr <= 0 && coef) {
+        if (lw <= 0) ThrowZeroWeightRoulette();
         if (lr < 0 && child.rlvl > -lr) return false;
         if (child.rweight >= lw) return true;
         // Russian roulette: survive with probability weight/lw, boosted.

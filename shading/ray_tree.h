@@ -26,6 +26,10 @@
 
 namespace rt {
 
+/// Radiance's "zero ray weight in Russian roulette" (rayorigin()): -lr <= 0
+/// with -lw <= 0 at the first ray that carries a coefficient.
+[[noreturn]] void ThrowZeroWeightRoulette();
+
 class RayTree {
 public:
     /// `setup` must outlive the tree.

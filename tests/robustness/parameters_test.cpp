@@ -129,6 +129,15 @@ TEST(ParameterLimits, ZeroWeightWithRussianRouletteIsAnError) {
     const RtraceRun direct = RunRtrace("-h -I -lw 0 -ab 0 " + kCornell, point, 60);
     EXPECT_EQ(direct.status, 0) << direct.err;
     EXPECT_EQ(direct.err, "");
+    // A mirror's reflected ray carries a coefficient too (Radiance 5.4a: the
+    // same error at -ab 0; with -lr 5 it runs).
+    const std::string mirror = WriteTempFile(
+        "mirror.rad", "void mirror m 0 0 3 .9 .9 .9\nm polygon p 0 0 12 -1 -1 0 1 -1 0 1 1 0 -1 1 0\n");
+    const std::string down = WriteTempFile("down.rays", "0 0 1 0 0 -1\n");
+    const RtraceRun reflected = RunRtrace("-h -w- -ab 0 -lw 0 " + mirror, down, 60);
+    EXPECT_EQ(reflected.status, 1);
+    EXPECT_EQ(reflected.err, "rtrace: fatal - zero ray weight in Russian roulette\n");
+    EXPECT_EQ(RunRtrace("-h -w- -ab 0 -lw 0 -lr 5 " + mirror, down, 60).status, 0);
 }
 
 // ----- where Radiance clamps or rejects -----
