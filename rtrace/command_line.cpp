@@ -567,7 +567,16 @@ std::string_view FormatName(char format) {
     return "unknown";
 }
 
+void RequireScene(const CommandLine& cl) {
+    if (cl.sceneFiles.empty()) ThrowUserError("missing octree argument");
+}
+
 CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningSink& warn) {
+    return ParseCommandLine(argsIn, warn, SceneArgument::Required);
+}
+
+CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningSink& warn,
+                             SceneArgument scene) {
     CommandLine cl;
     std::vector<std::string>& args = cl.args;
     args.assign(argsIn.begin(), argsIn.end());
@@ -618,7 +627,7 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
         if (args[k][0] == '-' && args[k] != "-") CommandLineError(args[i]);
         cl.sceneFiles.push_back(args[k]);
     }
-    if (cl.sceneFiles.empty()) ThrowUserError("missing octree argument");
+    if (scene == SceneArgument::Required) RequireScene(cl);
     return cl;
 }
 

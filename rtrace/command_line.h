@@ -108,6 +108,16 @@ struct CommandLine {
 /// octree argument", ... (exit 1); System "cannot expand '<arg>'" (exit 2).
 CommandLine ParseCommandLine(std::span<const std::string> args, const WarningSink& warn);
 
+/// Whether ParseCommandLine() itself stops on a command line with no scene,
+/// or leaves that to RequireScene() (rtrace, which opens its -e file first,
+/// as Radiance does, so that the message lands there).
+enum class SceneArgument { Required, CheckedLater };
+CommandLine ParseCommandLine(std::span<const std::string> args, const WarningSink& warn,
+                             SceneArgument scene);
+
+/// Radiance's "missing octree argument" (User) when `cl` names no scene.
+void RequireScene(const CommandLine& cl);
+
 /// Radiance's `rtrace -defaults` text for `options` (tabs included).
 std::string FormatDefaults(const RtraceOptions& options);
 

@@ -193,7 +193,7 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
     ProgramShell shell(args.empty() ? "rtrace" : ProgramName(args[0]), err);
     const WarningSink& warn = shell.Warn();
     return shell.Run([&] {
-        CommandLine cl = ParseCommandLine(args, warn);
+        CommandLine cl = ParseCommandLine(args, warn, SceneArgument::CheckedLater);
         const RtraceOptions& opt = cl.options;
         shell.SetName(cl.args[0]);
         shell.SetWarnings(opt.warnings);
@@ -203,6 +203,7 @@ int Run(std::span<const std::string> args, std::istream& in, std::ostream& out,
             return 0;
         }
         if (!shell.OpenErrorFile(opt.errorFile, env.pid, cl.args)) return 2;
+        RequireScene(cl);
 
         RecordWriter writer(opt.outputFormat, out);
         try {

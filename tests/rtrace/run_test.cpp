@@ -298,6 +298,16 @@ TEST(RtraceRun, ErrorFileGetsBannerAndMessages) {
     std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     EXPECT_EQ(text, "**************\n*** PID    42: rtrace -h -e " + path +
                         " -y 3 s.rad\n\nrtrace: warning - unexpected EOF on input\n");
+
+    // No scene: Radiance opens the -e file first, so the message lands there.
+    std::remove(path.c_str());
+    r = RunWith({"-e", path}, "");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.err, "");
+    std::ifstream g(path);
+    text.assign(std::istreambuf_iterator<char>(g), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text, "**************\n*** PID    42: rtrace -e " + path +
+                        "\n\nrtrace: fatal - missing octree argument\n");
 }
 
 }  // namespace
