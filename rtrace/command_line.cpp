@@ -571,10 +571,6 @@ void RequireScene(const CommandLine& cl) {
     if (cl.sceneFiles.empty()) ThrowUserError("missing octree argument");
 }
 
-CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningSink& warn) {
-    return ParseCommandLine(argsIn, warn, SceneArgument::Required);
-}
-
 CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningSink& warn,
                              SceneArgument scene) {
     CommandLine cl;

@@ -101,19 +101,19 @@ struct CommandLine {
     std::vector<std::string> sceneFiles;
 };
 
-/// Parses `args` (argv[0] first) the way rtrace does, and derives
-/// options.shading.irradiance (from -i and -I) and options.shading.seed (from
-/// -seed). Warnings emitted while parsing (-ap without bandwidth) go to
-/// `warn`. Throws rt::Error: User "command line error at '<arg>'", "missing
-/// octree argument", ... (exit 1); System "cannot expand '<arg>'" (exit 2).
-CommandLine ParseCommandLine(std::span<const std::string> args, const WarningSink& warn);
-
 /// Whether ParseCommandLine() itself stops on a command line with no scene,
 /// or leaves that to RequireScene() (rtrace, which opens its -e file first,
 /// as Radiance does, so that the message lands there).
 enum class SceneArgument { Required, CheckedLater };
+
+/// Parses `args` (argv[0] first) the way rtrace does, and derives
+/// options.shading.irradiance (from -i and -I) and options.shading.seed (from
+/// -seed). Warnings emitted while parsing (-ap without bandwidth) go to
+/// `warn`. Throws rt::Error: User "command line error at '<arg>'", "missing
+/// octree argument" (unless `scene` says later), ... (exit 1); System "cannot
+/// expand '<arg>'" (exit 2).
 CommandLine ParseCommandLine(std::span<const std::string> args, const WarningSink& warn,
-                             SceneArgument scene);
+                             SceneArgument scene = SceneArgument::Required);
 
 /// Radiance's "missing octree argument" (User) when `cl` names no scene.
 void RequireScene(const CommandLine& cl);
