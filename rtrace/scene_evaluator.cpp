@@ -170,10 +170,11 @@ public:
             restored > 0 ? "; " + std::to_string(restored) + " put back after another program "
                                                              "removed them"
                          : std::string();
-        char buf[420];
+        char buf[512];
         std::snprintf(buf, sizeof buf,
                       " (+%zu from the ambient file%s), %llu lookups, %.1f%% interpolated, %llu "
-                      "hemispheres, %llu rays traced + %llu shadow rays + %llu leak-test rays; "
+                      "hemispheres, %llu rays traced + %llu shadow rays (%llu more samples "
+                      "found blocked in the obstructor cache) + %llu leak-test rays; "
                       "thread time %.2f s "
                       "sampling, %.2f s lookups, %.2f s direct",
                       recordsLoaded_, putBack.c_str(),
@@ -183,6 +184,7 @@ public:
                       static_cast<unsigned long long>(s.hemispheres),
                       static_cast<unsigned long long>(s.raysTraced),
                       static_cast<unsigned long long>(s.shadowRays),
+                      static_cast<unsigned long long>(s.samplesObstructed),
                       static_cast<unsigned long long>(s.leakRays), s.secondsSampling,
                       s.secondsLookup, s.secondsDirect);
         return out + buf;

@@ -103,6 +103,75 @@ Rgb DirectLight::RelayValue(ThreadState& ts, TracedRay& sray, int source) const 
     return sray.rcol;
 }
 
+std::vector<int>& DirectLight::Obstructors(ThreadState& ts, int source) const {
+    std::vector<int>& table = ts.obstructors[static_cast<std::size_t>(source)];
+    if (!table.empty()) return table;
+    const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
+    table.assign(static_cast<std::size_t>(layout.CellCount()), -1);
+    // castshadow(): the first surface that qualifies along each ray, as if
+    // it had blocked a ray aimed back at the source. Radiance 5.4 starts
+    // that pretended ray one unit from the hit on the source's side (it
+    // subtracts the unnegated direction), so for a distant source a surface
+    // within one unit of the plane the rays start from falls outside every
+    // cell and is not recorded; lazyrad does the same, to test the same
+    // samples. Surfaces that do not qualify are stepped past (a bounded
+    // number, so that no scene can make the fill loop).
+    constexpr int kMaxSteps = 1024;
+    const double step = s_.scene.distanceTolerance;
+    ForEachObstructorFillRay(layout, s_.sources[static_cast<std::size_t>(source)],
+                             [&](const Vec3& start, const Vec3& dir) {
+                                 Vec3 org = start;
+                                 for (int n = 0; n < kMaxSteps; ++n) {
+                                     const auto hit = s_.core.Intersect(org, dir, 0.0);
+                                     if (!hit) return;
+                                     if (RecordBlocker(table, source, hit->point - dir, -dir, *hit)) {
+                                         return;
+                                     }
+                                     org = hit->point + dir * step;
+                                 }
+                             });
+    return table;
+}
+
+bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
+                                double distance) const {
+    const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
+    if (layout.kind == ObstructorLayout::Kind::None) return false;
+    const std::vector<int>& table = Obstructors(ts, source);
+    const int cell = layout.Cell(org, dir);
+    if (cell < 0) return false;
+    const int blocker = table[static_cast<std::size_t>(cell)];
+    if (blocker < 0) return false;
+    const auto hit = s_.core.IntersectSurfaceSide(blocker, org, dir);
+    if (!hit) return false;
+    // Without back faces (-bv-) light passes a surface from behind.
+    if (hit->back && !s_.shading.backfaceVisible) return false;
+    // A blocker beyond a local source does not shade it (Radiance checks
+    // that the source is not in front).
+    return layout.kind == ObstructorLayout::Kind::Distant || hit->t < distance;
+}
+
+bool DirectLight::RecordBlocker(std::vector<int>& table, int source, const Vec3& org,
+                                const Vec3& dir, const Hit& hit) const {
+    if (hit.instance >= 0 || hit.surface < 0) return false;  // inside an instance or mesh
+    if (hit.surface == s_.sources[static_cast<std::size_t>(source)].surface) return false;
+    if (!s_.reliableBlockers[static_cast<std::size_t>(hit.surface)]) return false;
+    const int cell = s_.obstructorLayouts[static_cast<std::size_t>(source)].Cell(org, dir);
+    if (cell >= 0) table[static_cast<std::size_t>(cell)] = hit.surface;
+    return true;
+}
+
+void DirectLight::RecordShadowBlocker(ThreadState& ts, int source, const Vec3& org,
+                                      const Vec3& dir, double reach, const Vec3* leaving) const {
+    if (s_.obstructorLayouts[static_cast<std::size_t>(source)].kind ==
+        ObstructorLayout::Kind::None) {
+        return;
+    }
+    if (const auto hit = s_.core.Intersect(org, dir, reach, leaving)) {
+        RecordBlocker(Obstructors(ts, source), source, org, dir, *hit);
+    }
+}
+
 Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
                              double distance) const {
     const LightSource& src = s_.sources[source];
@@ -190,6 +259,12 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
     for (const SourceSample& s : scratch.samples) {
         const Rgb coefficient = coef(s.dir, s.omega);
         if (Bright(coefficient) <= 0.0) continue;
+        // Radiance drops a whole source's sample that its obstructor cache
+        // finds blocked before anything else: no shadow ray, no statistics.
+        if (s.whole && CachedBlocked(ts, s.source, ray.rop, s.dir, s.distance)) {
+            ++ts.stats.samplesObstructed;
+            continue;
+        }
         const LightSource& src = s_.sources[s.source];
         const Rgb& color = std::get<LightParams>(s_.scene.materials[src.material].params).color;
         Rgb value;
@@ -240,7 +315,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
         // Built in place: a copy of a DirectContribution assembled on the
         // stack stalls on store forwarding.
         if (bright > 0.0) {
-            contribs.emplace_back(s.source, s.dir, distance, coefficient, value, bright);
+            contribs.emplace_back(s.source, s.dir, distance, coefficient, value, bright, s.alone);
         }
     }
     if (ray.medium) AttenuateByMedium(*ray.medium, s_.sources, contribs);
@@ -294,6 +369,8 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
                     ray.rcol += c.value;
                     nhits++;
                     tally.nhits++;
+                } else if (c.alone) {
+                    RecordShadowBlocker(ts, c.source, ray.rop, c.dir, reach, &ray.ron);
                 }
                 hwt += double(tally.nhits) / double(tally.ntests);
                 continue;
@@ -320,6 +397,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             tree_.ReportFollowedShadow(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;
+                if (c.alone) RecordBlocker(Obstructors(ts, c.source), c.source, ray.rop, c.dir, *hit);
             } else {
                 tree_.Participate(ts, sray);
                 c.value = sray.rcol * c.coef;

@@ -4,9 +4,12 @@
 // srcvalue(), raycont() for shadow rays); radiance-notes.md §3.3–3.4.
 #pragma once
 
+#include <vector>
+
 #include "core/function_ref.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
+#include "raycore/raycore.h"
 #include "shading/shading_state.h"
 #include "shading/traced_ray.h"
 
@@ -37,6 +40,26 @@ private:
     /// srcvalue() for a virtual `source`: radiance arriving along `sray`
     /// through the mirror or prism that relays it (black if the ray misses it).
     Rgb RelayValue(ThreadState& ts, TracedRay& sray, int source) const;
+
+    // Radiance's obstructor cache (shading/obstructors.h, srcobstr.c).
+    /// This thread's table for `source`, filled at its first use by rays
+    /// cast outward from the source (initobscache()).
+    std::vector<int>& Obstructors(ThreadState& ts, int source) const;
+    /// srcblocked(): whether the surface cached for the ray from `org` along
+    /// unit `dir` toward `source` blocks it before `distance` (the sample
+    /// point; any distance for a distant source).
+    bool CachedBlocked(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
+                       double distance) const;
+    /// srcblocker(): `hit` is the first surface on the ray from `org` along
+    /// `dir` toward `source`; if it is a reliable blocker (not in an
+    /// instance, not the source itself, IsReliableBlocker) it goes into the
+    /// ray's cell of `table`. False if it does not qualify.
+    bool RecordBlocker(std::vector<int>& table, int source, const Vec3& org, const Vec3& dir,
+                       const Hit& hit) const;
+    /// After a shadow ray found an opaque surface within `reach`: finds the
+    /// first one (the occlusion query does not say which) and records it.
+    void RecordShadowBlocker(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
+                             double reach, const Vec3* leaving) const;
 
     const ShadingSetup& s_;
     const RayTree& tree_;

@@ -638,12 +638,15 @@ void CollectSourceSamples(const std::vector<LightSource>& sources, const Vec3& p
         parts.clear();
         PartitionSource(src, point, rayWeight, options.sampling, parts);
         const bool partitioned = parts.size() > 1;
+        const std::size_t first = out.size();
         for (const Partition& part : parts) {
             SourceSample sample;
             if (SamplePartition(src, sn, part, partitioned, point, options, rng, sample)) {
+                sample.whole = !partitioned;
                 out.push_back(sample);
             }
         }
+        if (out.size() == first + 1) out.back().alone = true;
     }
 }
 

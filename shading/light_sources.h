@@ -64,6 +64,12 @@ struct SourceSample {
     Vec3 dir;               // unit, from the shading point
     double distance = 0;    // to the sample point on the source (kFhuge for distant)
     double omega = 0;       // solid angle this sample stands for (sr)
+    /// The source was not divided (one partition): Radiance checks only such
+    /// samples against its obstructor cache.
+    bool whole = false;
+    /// The only sample its source gave here: Radiance records the blocker of
+    /// only such a sample's shadow ray in the cache.
+    bool alone = false;
 };
 
 /// Radiance's marksources(): every surface whose material emits and whose

@@ -15,6 +15,7 @@ namespace rt {
 struct RenderStats : IrradianceCounters {
     std::uint64_t raysTraced = 0;        // every ray sent into the scene (not shadow rays)
     std::uint64_t shadowRays = 0;        // shadow rays actually tested
+    std::uint64_t samplesObstructed = 0; // source samples the obstructor cache dropped
     std::uint64_t recordsLoaded = 0;     // records added from outside (ambient files)
 
     // Only measured when timing is on (Renderer::EnableTiming; rtrace -t),
@@ -27,6 +28,7 @@ struct RenderStats : IrradianceCounters {
     RenderStats& operator+=(const RenderStats& other) {
         raysTraced += other.raysTraced;
         shadowRays += other.shadowRays;
+        samplesObstructed += other.samplesObstructed;
         leakRays += other.leakRays;
         ambientLookups += other.ambientLookups;
         ambientHits += other.ambientHits;

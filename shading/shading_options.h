@@ -18,6 +18,9 @@ struct DirectOptions {
     int relays = 2;             // -dr: reflections of light sources in planar mirrors
     int pretest = 512;          // -dp (parsed; lazyrad needs no visibility pretest)
     bool sourcesVisible = true; // -dv
+    /// Radiance's obstructor cache (shading/obstructors.h); no option turns
+    /// it off in Radiance or rtrace, only tests do, to compare.
+    bool obstructorCache = true;
 };
 
 struct SpecularOptions {

@@ -117,6 +117,17 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
     AddVirtualSources(scene, shading.direct.relays, sourceWarn, PrismProbe(scene, core, warn),
                       sources);
 
+    obstructorLayouts.reserve(sources.size());
+    for (const LightSource& src : sources) {
+        obstructorLayouts.push_back(shading.direct.obstructorCache
+                                        ? MakeObstructorLayout(src, scene.cubeOrigin, scene.cubeSize)
+                                        : ObstructorLayout{});
+    }
+    reliableBlockers.resize(scene.surfaces.size());
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        reliableBlockers[i] = IsReliableBlocker(scene, scene.surfaces[i]);
+    }
+
     ambientList.insert(ambient.modifierList.begin(), ambient.modifierList.end());
 
     shadowCheckCounts.resize(257);
@@ -135,7 +146,10 @@ ShadingSetup::ShadingSetup(const Scene& scene_, const RayCore& core_,
 }
 
 ThreadState::ThreadState(const ShadingSetup& setup, WarningSink warn_)
-    : warn(std::move(warn_)), rng(setup.shading.seed), sourceTallies(setup.sources.size()) {
+    : warn(std::move(warn_)),
+      rng(setup.shading.seed),
+      sourceTallies(setup.sources.size()),
+      obstructors(setup.sources.size()) {
     for (size_t i = 0; i < setup.sources.size(); ++i) {
         sourceTallies[i].aimSuccess = SourceTally::FirstAimCount(setup.sources[i]);
     }

@@ -30,6 +30,7 @@
 #include "raycore/raycore.h"
 #include "scene/scene.h"
 #include "shading/light_sources.h"
+#include "shading/obstructors.h"
 #include "shading/shading_options.h"
 #include "shading/ray_result.h"
 #include "shading/render_stats.h"
@@ -51,6 +52,11 @@ struct ShadingSetup {
     ShadingOptions shading;
     AmbientOptions ambient;
     std::vector<LightSource> sources;
+    /// Radiance's obstructor cache (shading/obstructors.h): each source's
+    /// table layout (all Kind::None when the cache is off), and for each of
+    /// Scene::surfaces whether it may be recorded as a blocker.
+    std::vector<ObstructorLayout> obstructorLayouts;
+    std::vector<std::uint8_t> reliableBlockers;
     /// Radiance's hidden "Lamb" material for -i/-I: plastic with reflectance
     /// π, which turns reflected radiance into irradiance.
     Material lambertian;
@@ -107,6 +113,7 @@ struct DirectContribution {
     Rgb coef;             // material coefficient for this sample
     Rgb value;            // unshadowed radiance ⊗ coef
     double bright = 0;
+    bool alone = false;   // SourceSample::alone
 };
 
 /// Scratch space of one direct-light evaluation, kept between calls so that
@@ -142,6 +149,9 @@ struct ThreadState {
     std::unordered_set<const Material*> orientationWarned;  // illegal orientation vectors reported
     std::unordered_set<const Material*> brdfWarned;  // BRDF functions' compute errors reported
     std::vector<SourceTally> sourceTallies;  // one per ShadingSetup::sources
+    /// Each source's obstructor table: per cell a Scene::surfaces index or -1.
+    /// Empty until the source's first check fills it (DirectLight).
+    std::vector<std::vector<int>> obstructors;
     RenderStats stats;
     /// The ambient depth, the records made here and not yet handed out, and
     /// whether the cache's work is timed.
