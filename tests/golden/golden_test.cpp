@@ -323,12 +323,36 @@ TEST(Golden, IrradianceSensorsHaveNoTraceLineOfTheirOwn) {
                    data + "cornell_I_ovtvsL.txt");
 }
 
+/// The obstructor cache (tests/data/golden/make_obstructor_refs.sh): in one
+/// process over the mixed room's 120 work-plane sensors, the shadow rays
+/// lazyrad traces are Radiance's, line for line (the cache skips those whose
+/// blocker it knows, filled from the sources outward at their first use and
+/// from blocked shadow rays after), and so are the values where adaptive
+/// shadow testing estimates the untested samples from what was tested.
+TEST(Golden, ObstructorCacheMatchesRadiance) {
+    const std::string data = kSource + "/tests/data/golden/";
+    const std::string run = kRtrace + " -h -I -ab 0 -u- -dj 0 -ss 0 ";
+    const std::string scene = kSource + "/scenes/mixed/mixed.rad < " + kSource +
+                              "/scenes/mixed/workplane.pts";
+    CompareNumbers("shadow rays", run + "-dt .3 -dc .5 -oTvmp " + scene,
+                   data + "mixed_obstructed_oTvmp.txt");
+    CompareNumbers("-dt 1 -dc 0", run + "-dt 1 -dc 0 -ov " + scene,
+                   data + "mixed_obstructed_dt1.txt");
+    CompareNumbers("-dt .5 -dc .25", run + "-dt .5 -dc .25 -ov " + scene,
+                   data + "mixed_obstructed_dt5.txt");
+    // A cached blocker beyond the source does not block it.
+    const std::string shade = data + "obstructor_shade.rad < " + data + "obstructor_shade.pts";
+    CompareNumbers("lampshade trace", kRtrace + " -h -I -ab 0 -dt 0 -oTvmp " + shade,
+                   data + "obstructor_shade_oTvmp.txt");
+    CompareNumbers("lampshade", kRtrace + " -h -I -ab 0 -dt 0 -ov " + shade,
+                   data + "obstructor_shade_ov.txt");
+}
+
 /// -oT in the daylit room (tests/data/golden/make_lengths.sh): a shadow ray
 /// that reaches the sun unobstructed is reported as the sun (Radiance traces
 /// it when -oT has it follow every source). One process per ray, as the
-/// reference was made: Radiance's obstructor cache, which lazyrad does not
-/// have, would otherwise hide blocked shadow rays of later rays (README,
-/// Differences).
+/// reference was made (before lazyrad had Radiance's obstructor cache, which
+/// hides blocked shadow rays of later rays).
 TEST(Golden, TraceFollowsShadowRaysToTheSun) {
     const std::string data = kSource + "/tests/data/golden/";
     CompareNumbers("-oTvsL", "while IFS= read -r ray; do echo \"$ray\" | " + kRtrace +

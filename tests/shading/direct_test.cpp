@@ -198,5 +198,38 @@ TEST(DirectLight, AimingFailuresAreCountedAsRadianceCountsThem) {
     EXPECT_EQ(AimWarnings(100, 4, 10), once);
 }
 
+/// Radiance's obstructor cache: at -dt 0 every sample is tested, so the
+/// samples the cache drops are ones whose shadow ray would have been blocked
+/// anyway: the same values with and without the cache, and fewer shadow rays
+/// with it. (At -dt above 0 it changes which samples are tested, as it does
+/// in Radiance: Golden.ObstructorCacheMatchesRadiance.)
+TEST(DirectLight, ObstructorCacheSavesShadowRaysWithoutChangingExactAnswers) {
+    const Scene scene = Build(kRoom);
+    const RayCore core(scene);
+    const auto rays = RoomRays(true);
+    std::vector<Rgb> values[2];
+    RenderStats stats[2];
+    for (const bool cache : {false, true}) {
+        ShadingOptions shading;
+        shading.irradiance = IrradianceMode::Immediate;
+        shading.uncorrelated = false;
+        shading.direct.threshold = 0;
+        shading.direct.obstructorCache = cache;
+        AmbientOptions ambient;
+        ambient.bounces = 0;
+        Renderer renderer(scene, core, shading, ambient, [](const std::string&) {});
+        std::uint64_t index = 0;
+        for (const auto& [org, dir] : rays) {
+            values[cache].push_back(renderer.TraceInput(org, Normalize(dir), 0, index++).value);
+        }
+        stats[cache] = renderer.Stats();
+    }
+    EXPECT_EQ(values[false], values[true]);
+    EXPECT_EQ(stats[false].samplesObstructed, 0u);
+    // Every sample the cache dropped is a shadow ray saved.
+    EXPECT_GT(stats[true].samplesObstructed, 0u);
+    EXPECT_EQ(stats[true].shadowRays + stats[true].samplesObstructed, stats[false].shadowRays);
+}
+
 }  // namespace
 }  // namespace rt
