@@ -15,10 +15,10 @@ the 1e-6 floor used for zeros). Radiance runs on an octree oconv makes of the
 scene; lazyrad on the same octree. Exit status 1 if anything differed.
 
 With --trace it compares -otvsL and -oTvsL ray trees instead, one process per
-ray: Radiance's obstructor cache leaves out shadow rays whose blocker it
-already knows, so there a tree passes when Radiance's lines are lazyrad's with
-only zero-valued lines left out (README, Differences, "Source obstructor
-cache"). Radiance 5.4a crashes tracing in a scene whose prisms make images;
+ray. A tree passes when Radiance's lines are lazyrad's with only zero-valued
+lines left out: the allowance dates from before lazyrad had Radiance's
+obstructor cache, which leaves out shadow rays whose blocker it already knows
+(README, "The direct calculation"). Radiance 5.4a crashes tracing in a scene whose prisms make images;
 such rays are counted apart.
 
 Known differences that remain (README, Differences): the coincident-surface

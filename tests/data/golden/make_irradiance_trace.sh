@@ -4,8 +4,8 @@
 # floor sensors. Radiance shades a sensor without raytrace(), so the trace
 # has no line for the sensor itself, and shadow rays that reach their source
 # are not shown (-ot): the output is the two values alone. (A sensor in a
-# shadow is left out: Radiance's obstructor cache, which lazyrad does not
-# have, hides some blocked shadow rays; README, Differences.) -dt 0 -dj 0: no
+# shadow is left out: Radiance's obstructor cache hides some blocked shadow
+# rays, and lazyrad had none when this was made.) -dt 0 -dj 0: no
 # estimated shadow tests, no jitter. The test only reads the committed file.
 #
 #   tests/data/golden/make_irradiance_trace.sh [radiance-dir]
