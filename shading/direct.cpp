@@ -124,7 +124,8 @@ std::vector<int>& DirectLight::Obstructors(ThreadState& ts, int source) const {
                                  for (int n = 0; n < kMaxSteps; ++n) {
                                      const auto hit = s_.core.Intersect(org, dir, 0.0);
                                      if (!hit) return;
-                                     if (RecordBlocker(table, source, hit->point - dir, -dir, *hit)) {
+                                     if (RecordBlocker(table, source, hit->point - dir, -dir,
+                                                       hit->instance, hit->surface)) {
                                          return;
                                      }
                                      org = hit->point + dir * step;
@@ -135,8 +136,8 @@ std::vector<int>& DirectLight::Obstructors(ThreadState& ts, int source) const {
 
 bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
                                 double distance) const {
+    if (!HasObstructors(source)) return false;
     const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
-    if (layout.kind == ObstructorLayout::Kind::None) return false;
     const std::vector<int>& table = Obstructors(ts, source);
     const int cell = layout.Cell(org, dir);
     if (cell < 0) return false;
@@ -152,24 +153,27 @@ bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, co
 }
 
 bool DirectLight::RecordBlocker(std::vector<int>& table, int source, const Vec3& org,
-                                const Vec3& dir, const Hit& hit) const {
-    if (hit.instance >= 0 || hit.surface < 0) return false;  // inside an instance or mesh
-    if (hit.surface == s_.sources[static_cast<std::size_t>(source)].surface) return false;
-    if (!s_.reliableBlockers[static_cast<std::size_t>(hit.surface)]) return false;
+                                const Vec3& dir, int instance, int surface) const {
+    if (instance >= 0 || surface < 0) return false;  // inside an instance or mesh, or nothing
+    if (surface == s_.sources[static_cast<std::size_t>(source)].surface) return false;
+    if (!s_.reliableBlockers[static_cast<std::size_t>(surface)]) return false;
     const int cell = s_.obstructorLayouts[static_cast<std::size_t>(source)].Cell(org, dir);
-    if (cell >= 0) table[static_cast<std::size_t>(cell)] = hit.surface;
+    if (cell >= 0) table[static_cast<std::size_t>(cell)] = surface;
     return true;
 }
 
 void DirectLight::RecordShadowBlocker(ThreadState& ts, int source, const Vec3& org,
                                       const Vec3& dir, double reach, const Vec3* leaving) const {
-    if (s_.obstructorLayouts[static_cast<std::size_t>(source)].kind ==
-        ObstructorLayout::Kind::None) {
-        return;
-    }
+    if (!HasObstructors(source)) return;
     if (const auto hit = s_.core.Intersect(org, dir, reach, leaving)) {
-        RecordBlocker(Obstructors(ts, source), source, org, dir, *hit);
+        RecordBlocker(Obstructors(ts, source), source, org, dir, hit->instance, hit->surface);
     }
+}
+
+void DirectLight::RecordBlockerOf(ThreadState& ts, const TracedRay& sray) const {
+    if (!HasObstructors(sray.rsrc)) return;
+    RecordBlocker(Obstructors(ts, sray.rsrc), sray.rsrc, sray.org, sray.dir, sray.instance,
+                  sray.surface);
 }
 
 Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,
@@ -397,7 +401,7 @@ void DirectLight::AddUntimed(ThreadState& ts, TracedRay& ray,
             tree_.ReportFollowedShadow(ts, sray);
             if (Bright(sray.rcol) <= kFtiny) {
                 blocked = true;
-                if (c.alone) RecordBlocker(Obstructors(ts, c.source), c.source, ray.rop, c.dir, *hit);
+                if (c.alone) RecordBlockerOf(ts, sray);
             } else {
                 tree_.Participate(ts, sray);
                 c.value = sray.rcol * c.coef;

@@ -28,6 +28,15 @@ public:
     /// stands for.
     void Add(ThreadState& ts, TracedRay& ray, FunctionRef<Rgb(const Vec3&, double)> coef) const;
 
+    /// For light a medium scatters (Radiance's srcscatter()): whether this
+    /// thread's obstructor cache knows a surface blocking the ray from `org`
+    /// to `sample` (of a whole source), and, after a ray toward its source
+    /// `sray.rsrc` came back black, recording the surface it met first.
+    bool KnownBlocked(ThreadState& ts, const SourceSample& sample, const Vec3& org) const {
+        return CachedBlocked(ts, sample.source, org, sample.dir, sample.distance);
+    }
+    void RecordBlockerOf(ThreadState& ts, const TracedRay& sray) const;
+
 private:
     void AddUntimed(ThreadState& ts, TracedRay& ray,
                     FunctionRef<Rgb(const Vec3&, double)> coef) const;
@@ -50,12 +59,18 @@ private:
     /// point; any distance for a distant source).
     bool CachedBlocked(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
                        double distance) const;
-    /// srcblocker(): `hit` is the first surface on the ray from `org` along
-    /// `dir` toward `source`; if it is a reliable blocker (not in an
-    /// instance, not the source itself, IsReliableBlocker) it goes into the
-    /// ray's cell of `table`. False if it does not qualify.
+    /// Whether `source` has a table (ObstructorLayout::Kind other than None).
+    bool HasObstructors(int source) const {
+        return s_.obstructorLayouts[static_cast<std::size_t>(source)].kind !=
+               ObstructorLayout::Kind::None;
+    }
+    /// srcblocker(): `surface` of `instance` (-1: the scene's own) is the
+    /// first surface on the ray from `org` along `dir` toward `source`; if it
+    /// is a reliable blocker (not in an instance, not the source itself,
+    /// IsReliableBlocker) it goes into the ray's cell of `table`. False if it
+    /// does not qualify.
     bool RecordBlocker(std::vector<int>& table, int source, const Vec3& org, const Vec3& dir,
-                       const Hit& hit) const;
+                       int instance, int surface) const;
     /// After a shadow ray found an opaque surface within `reach`: finds the
     /// first one (the occlusion query does not say which) and records it.
     void RecordShadowBlocker(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,

@@ -188,6 +188,12 @@ void RayTree::ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRa
                                    ts.rng, sample)) {
                 continue;
             }
+            // Radiance's obstructor cache is asked first here too, and told
+            // what stopped a ray that came back black.
+            if (direct_.KnownBlocked(ts, sample, ray.org + ray.dir * t)) {
+                ++ts.stats.samplesObstructed;
+                continue;
+            }
             // A shadow ray of its own, as srcscatter() makes it: no parent
             // (full weight, no antimatter passed), the ray's medium, followed
             // past whatever transmits.
@@ -199,7 +205,10 @@ void RayTree::ScatterSourceLight(ThreadState& ts, const Medium& medium, TracedRa
             sray.medium = &medium;
             sray.depth = ray.depth + 1;
             Trace(ts, sray);
-            if (Bright(sray.rcol) <= kFtiny) continue;
+            if (Bright(sray.rcol) <= kFtiny) {
+                direct_.RecordBlockerOf(ts, sray);
+                continue;
+            }
             // Henyey–Greenstein phase function (4π-normalised), the sample's
             // solid angle, and this sample's share of the ray's length.
             double phase = 1.0;

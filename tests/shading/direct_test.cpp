@@ -231,5 +231,47 @@ TEST(DirectLight, ObstructorCacheSavesShadowRaysWithoutChangingExactAnswers) {
     EXPECT_EQ(stats[true].shadowRays + stats[true].samplesObstructed, stats[false].shadowRays);
 }
 
+/// The same for the light a mist scatters into rays (Radiance's srcscatter()
+/// asks the cache too): level eye rays through a fog around a bulb, under a
+/// plate that shades half of their way through it from the bulb, and on into
+/// nothing, so that only scattered light reaches them.
+TEST(DirectLight, ObstructorCacheSkipsScatterSamplesWithoutChangingAnswers) {
+    const Scene scene = Build(R"(
+void light lamp 0 0 3 50 50 50
+lamp sphere bulb 0 0 4 0 0 2 .1
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon plate 0 0 12 -.7 -.7 1.5  -.7 .7 1.5  .7 .7 1.5  .7 -.7 1.5
+grey polygon floor 0 0 12 -5 -5 0  -5 5 0  5 5 0  5 -5 0
+void mist fog 1 bulb 0 7 .3 .3 .3 .9 .9 .9 0
+fog sphere fogball 0 0 4 0 0 1 3
+)");
+    const RayCore core(scene);
+    std::vector<Rgb> values[2];
+    RenderStats stats[2];
+    for (const bool cache : {false, true}) {
+        ShadingOptions shading;
+        shading.uncorrelated = true;  // a random point along each ray, the same in both runs
+        shading.direct.threshold = 0;
+        shading.direct.obstructorCache = cache;
+        AmbientOptions ambient;
+        ambient.bounces = 0;
+        Renderer renderer(scene, core, shading, ambient, [](const std::string&) {});
+        std::uint64_t index = 0;
+        for (int i = 0; i < 100; ++i) {
+            const Vec3 dir = Normalize(Vec3{-1, 0.002 * (i - 50), 0});
+            values[cache].push_back(renderer.TraceInput({6, 0, 1}, dir, 0, index++).value);
+        }
+        stats[cache] = renderer.Stats();
+    }
+    EXPECT_EQ(values[false], values[true]);
+    // Samples under the plate and beside it (one point per ray, at random).
+    int lit = 0;
+    for (const Rgb& v : values[true]) lit += Bright(v) > 0.0;
+    EXPECT_GT(lit, 10);
+    EXPECT_LT(lit, 90);
+    EXPECT_EQ(stats[false].samplesObstructed, 0u);
+    EXPECT_GT(stats[true].samplesObstructed, 0u);
+}
+
 }  // namespace
 }  // namespace rt
