@@ -23,8 +23,9 @@ line says whether it is still needed. Radiance 5.4a crashes tracing in a scene w
 such rays are counted apart.
 
 Known differences that remain (README, Differences): the coincident-surface
-rule, Monte Carlo in rough specular sampling unless -ss 0, and -dt's estimates
-unless -dt 0. Needs ../shared (Radiance); the project's tests never call it.
+rule and Monte Carlo in rough specular sampling unless -ss 0 (-dt's estimates
+agree too since lazyrad has Radiance's obstructor cache). Needs ../shared
+(Radiance); the project's tests never call it.
 """
 import argparse
 import os

@@ -198,21 +198,18 @@ TEST(DirectLight, AimingFailuresAreCountedAsRadianceCountsThem) {
     EXPECT_EQ(AimWarnings(100, 4, 10), once);
 }
 
-/// Radiance's obstructor cache: at -dt 0 every sample is tested, so the
-/// samples the cache drops are ones whose shadow ray would have been blocked
-/// anyway: the same values with and without the cache, and fewer shadow rays
-/// with it. (At -dt above 0 it changes which samples are tested, as it does
-/// in Radiance: Golden.ObstructorCacheMatchesRadiance.)
-TEST(DirectLight, ObstructorCacheSavesShadowRaysWithoutChangingExactAnswers) {
-    const Scene scene = Build(kRoom);
-    const RayCore core(scene);
-    const auto rays = RoomRays(true);
+/// Traces `rays` at -dt 0 with -ab 0, without the obstructor cache ([0]) and
+/// with it ([1]); `shading` gives the other options.
+struct CacheRuns {
     std::vector<Rgb> values[2];
     RenderStats stats[2];
+};
+CacheRuns TraceWithoutAndWithCache(const Scene& scene,
+                                   const std::vector<std::pair<Vec3, Vec3>>& rays,
+                                   ShadingOptions shading) {
+    const RayCore core(scene);
+    CacheRuns runs;
     for (const bool cache : {false, true}) {
-        ShadingOptions shading;
-        shading.irradiance = IrradianceMode::Immediate;
-        shading.uncorrelated = false;
         shading.direct.threshold = 0;
         shading.direct.obstructorCache = cache;
         AmbientOptions ambient;
@@ -220,15 +217,29 @@ TEST(DirectLight, ObstructorCacheSavesShadowRaysWithoutChangingExactAnswers) {
         Renderer renderer(scene, core, shading, ambient, [](const std::string&) {});
         std::uint64_t index = 0;
         for (const auto& [org, dir] : rays) {
-            values[cache].push_back(renderer.TraceInput(org, Normalize(dir), 0, index++).value);
+            runs.values[cache].push_back(renderer.TraceInput(org, Normalize(dir), 0, index++).value);
         }
-        stats[cache] = renderer.Stats();
+        runs.stats[cache] = renderer.Stats();
     }
-    EXPECT_EQ(values[false], values[true]);
-    EXPECT_EQ(stats[false].samplesObstructed, 0u);
+    return runs;
+}
+
+/// Radiance's obstructor cache: at -dt 0 every sample is tested, so the
+/// samples the cache drops are ones whose shadow ray would have been blocked
+/// anyway: the same values with and without the cache, and fewer shadow rays
+/// with it. (At -dt above 0 it changes which samples are tested, as it does
+/// in Radiance: Golden.ObstructorCacheMatchesRadiance.)
+TEST(DirectLight, ObstructorCacheSavesShadowRaysWithoutChangingExactAnswers) {
+    ShadingOptions shading;
+    shading.irradiance = IrradianceMode::Immediate;
+    shading.uncorrelated = false;
+    const CacheRuns runs = TraceWithoutAndWithCache(Build(kRoom), RoomRays(true), shading);
+    EXPECT_EQ(runs.values[false], runs.values[true]);
+    EXPECT_EQ(runs.stats[false].samplesObstructed, 0u);
     // Every sample the cache dropped is a shadow ray saved.
-    EXPECT_GT(stats[true].samplesObstructed, 0u);
-    EXPECT_EQ(stats[true].shadowRays + stats[true].samplesObstructed, stats[false].shadowRays);
+    EXPECT_GT(runs.stats[true].samplesObstructed, 0u);
+    EXPECT_EQ(runs.stats[true].shadowRays + runs.stats[true].samplesObstructed,
+              runs.stats[false].shadowRays);
 }
 
 /// The same for the light a mist scatters into rays (Radiance's srcscatter()
@@ -245,32 +256,19 @@ grey polygon floor 0 0 12 -5 -5 0  -5 5 0  5 5 0  5 -5 0
 void mist fog 1 bulb 0 7 .3 .3 .3 .9 .9 .9 0
 fog sphere fogball 0 0 4 0 0 1 3
 )");
-    const RayCore core(scene);
-    std::vector<Rgb> values[2];
-    RenderStats stats[2];
-    for (const bool cache : {false, true}) {
-        ShadingOptions shading;
-        shading.uncorrelated = true;  // a random point along each ray, the same in both runs
-        shading.direct.threshold = 0;
-        shading.direct.obstructorCache = cache;
-        AmbientOptions ambient;
-        ambient.bounces = 0;
-        Renderer renderer(scene, core, shading, ambient, [](const std::string&) {});
-        std::uint64_t index = 0;
-        for (int i = 0; i < 100; ++i) {
-            const Vec3 dir = Normalize(Vec3{-1, 0.002 * (i - 50), 0});
-            values[cache].push_back(renderer.TraceInput({6, 0, 1}, dir, 0, index++).value);
-        }
-        stats[cache] = renderer.Stats();
-    }
-    EXPECT_EQ(values[false], values[true]);
+    std::vector<std::pair<Vec3, Vec3>> rays;
+    for (int i = 0; i < 100; ++i) rays.push_back({{6, 0, 1}, {-1, 0.002 * (i - 50), 0}});
+    ShadingOptions shading;
+    shading.uncorrelated = true;  // a random point along each ray, the same in both runs
+    const CacheRuns runs = TraceWithoutAndWithCache(scene, rays, shading);
+    EXPECT_EQ(runs.values[false], runs.values[true]);
     // Samples under the plate and beside it (one point per ray, at random).
     int lit = 0;
-    for (const Rgb& v : values[true]) lit += Bright(v) > 0.0;
+    for (const Rgb& v : runs.values[true]) lit += Bright(v) > 0.0;
     EXPECT_GT(lit, 10);
     EXPECT_LT(lit, 90);
-    EXPECT_EQ(stats[false].samplesObstructed, 0u);
-    EXPECT_GT(stats[true].samplesObstructed, 0u);
+    EXPECT_EQ(runs.stats[false].samplesObstructed, 0u);
+    EXPECT_GT(runs.stats[true].samplesObstructed, 0u);
 }
 
 }  // namespace
