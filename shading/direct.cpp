@@ -105,43 +105,51 @@ Rgb DirectLight::RelayValue(ThreadState& ts, TracedRay& sray, int source) const 
 
 std::vector<int>& DirectLight::Obstructors(ThreadState& ts, int source) const {
     std::vector<int>& table = ts.obstructors[static_cast<std::size_t>(source)];
-    if (!table.empty()) return table;
-    const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
-    table.assign(static_cast<std::size_t>(layout.CellCount()), -1);
-    // castshadow(): the first surface that qualifies along each ray, as if
-    // it had blocked a ray aimed back at the source. Radiance 5.4 starts
-    // that pretended ray one unit from the hit on the source's side (it
-    // subtracts the unnegated direction), so for a distant source a surface
-    // within one unit of the plane the rays start from falls outside every
-    // cell and is not recorded; lazyrad does the same, to test the same
+    if (table.empty()) {
+        const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
+        table.assign(static_cast<std::size_t>(layout.CellCount()), kUnfilled);
+    }
+    return table;
+}
+
+int DirectLight::CachedSurface(std::vector<int>& table, int source, int cell) const {
+    int& entry = table[static_cast<std::size_t>(cell)];
+    if (entry != kUnfilled) return entry;
+    // castshadow(): the first surface that qualifies along the cell's fill
+    // ray, as if it had blocked a ray aimed back at the source. Radiance 5.4
+    // starts that pretended ray one unit from the hit on the source's side
+    // (it subtracts the unnegated direction), so for a distant source a
+    // surface within one unit of the plane the rays start from falls outside
+    // every cell and is not recorded; lazyrad does the same, to test the same
     // samples. Surfaces that do not qualify are stepped past (a bounded
     // number, so that no scene can make the fill loop).
+    entry = -1;
+    const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
+    const ObstructorFillRay fill =
+        MakeObstructorFillRay(layout, s_.sources[static_cast<std::size_t>(source)], cell);
     constexpr int kMaxSteps = 1024;
-    const double step = s_.scene.distanceTolerance;
-    ForEachObstructorFillRay(layout, s_.sources[static_cast<std::size_t>(source)],
-                             [&](const Vec3& start, const Vec3& dir) {
-                                 Vec3 org = start;
-                                 for (int n = 0; n < kMaxSteps; ++n) {
-                                     const auto hit = s_.core.Intersect(org, dir, 0.0);
-                                     if (!hit) return;
-                                     if (RecordBlocker(table, source, hit->point - dir, -dir,
-                                                       hit->instance, hit->surface)) {
-                                         return;
-                                     }
-                                     org = hit->point + dir * step;
-                                 }
-                             });
-    return table;
+    Vec3 org = fill.org;
+    for (int n = 0; n < kMaxSteps; ++n) {
+        const auto hit = s_.core.Intersect(org, fill.dir, 0.0);
+        if (!hit) break;
+        if (IsRecordable(source, hit->instance, hit->surface)) {
+            // The pretended ray lands in this cell or, for a distant source,
+            // in none (Obstructors.EachCellHasAFillRayOfItsOwn).
+            if (layout.Cell(hit->point - fill.dir, -fill.dir) == cell) entry = hit->surface;
+            break;
+        }
+        org = hit->point + fill.dir * s_.scene.distanceTolerance;
+    }
+    return entry;
 }
 
 bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
                                 double distance) const {
     if (!HasObstructors(source)) return false;
     const ObstructorLayout& layout = s_.obstructorLayouts[static_cast<std::size_t>(source)];
-    const std::vector<int>& table = Obstructors(ts, source);
     const int cell = layout.Cell(org, dir);
     if (cell < 0) return false;
-    const int blocker = table[static_cast<std::size_t>(cell)];
+    const int blocker = CachedSurface(Obstructors(ts, source), source, cell);
     if (blocker < 0) return false;
     const auto hit = s_.core.IntersectSurfaceSide(blocker, org, dir);
     if (!hit) return false;
@@ -152,28 +160,31 @@ bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, co
     return layout.kind == ObstructorLayout::Kind::Distant || hit->t < distance;
 }
 
-bool DirectLight::RecordBlocker(std::vector<int>& table, int source, const Vec3& org,
-                                const Vec3& dir, int instance, int surface) const {
+bool DirectLight::IsRecordable(int source, int instance, int surface) const {
     if (instance >= 0 || surface < 0) return false;  // inside an instance or mesh, or nothing
     if (surface == s_.sources[static_cast<std::size_t>(source)].surface) return false;
-    if (!s_.reliableBlockers[static_cast<std::size_t>(surface)]) return false;
+    return s_.reliableBlockers[static_cast<std::size_t>(surface)] != 0;
+}
+
+void DirectLight::RecordBlocker(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
+                                int instance, int surface) const {
+    if (!IsRecordable(source, instance, surface)) return;
     const int cell = s_.obstructorLayouts[static_cast<std::size_t>(source)].Cell(org, dir);
-    if (cell >= 0) table[static_cast<std::size_t>(cell)] = surface;
-    return true;
+    // Whether or not the cell was filled, the blocker replaces what it held.
+    if (cell >= 0) Obstructors(ts, source)[static_cast<std::size_t>(cell)] = surface;
 }
 
 void DirectLight::RecordShadowBlocker(ThreadState& ts, int source, const Vec3& org,
                                       const Vec3& dir, double reach, const Vec3* leaving) const {
     if (!HasObstructors(source)) return;
     if (const auto hit = s_.core.Intersect(org, dir, reach, leaving)) {
-        RecordBlocker(Obstructors(ts, source), source, org, dir, hit->instance, hit->surface);
+        RecordBlocker(ts, source, org, dir, hit->instance, hit->surface);
     }
 }
 
 void DirectLight::RecordBlockerOf(ThreadState& ts, const TracedRay& sray) const {
     if (!HasObstructors(sray.rsrc)) return;
-    RecordBlocker(Obstructors(ts, sray.rsrc), sray.rsrc, sray.org, sray.dir, sray.instance,
-                  sray.surface);
+    RecordBlocker(ts, sray.rsrc, sray.org, sray.dir, sray.instance, sray.surface);
 }
 
 Rgb DirectLight::SourceValue(ThreadState& ts, TracedRay& sray, int source,

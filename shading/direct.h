@@ -51,9 +51,13 @@ private:
     Rgb RelayValue(ThreadState& ts, TracedRay& sray, int source) const;
 
     // Radiance's obstructor cache (shading/obstructors.h, srcobstr.c).
-    /// This thread's table for `source`, filled at its first use by rays
-    /// cast outward from the source (initobscache()).
+    /// A table entry not filled yet; -1 is a cell with no blocker.
+    static constexpr int kUnfilled = -2;
+    /// This thread's table for `source` (kUnfilled entries at first).
     std::vector<int>& Obstructors(ThreadState& ts, int source) const;
+    /// The surface in `cell` of `source`'s `table` (-1: none), found by the
+    /// cell's fill ray (initobscache()'s) if the cell was never filled.
+    int CachedSurface(std::vector<int>& table, int source, int cell) const;
     /// srcblocked(): whether the surface cached for the ray from `org` along
     /// unit `dir` toward `source` blocks it before `distance` (the sample
     /// point; any distance for a distant source).
@@ -64,12 +68,14 @@ private:
         return s_.obstructorLayouts[static_cast<std::size_t>(source)].kind !=
                ObstructorLayout::Kind::None;
     }
-    /// srcblocker(): `surface` of `instance` (-1: the scene's own) is the
-    /// first surface on the ray from `org` along `dir` toward `source`; if it
-    /// is a reliable blocker (not in an instance, not the source itself,
-    /// IsReliableBlocker) it goes into the ray's cell of `table`. False if it
-    /// does not qualify.
-    bool RecordBlocker(std::vector<int>& table, int source, const Vec3& org, const Vec3& dir,
+    /// Whether `surface` of `instance` (-1: the scene's own) may be recorded
+    /// for `source`: not in an instance, not the source itself, and
+    /// IsReliableBlocker.
+    bool IsRecordable(int source, int instance, int surface) const;
+    /// srcblocker(): `surface` of `instance` is the first surface on the ray
+    /// from `org` along `dir` toward `source`; if it IsRecordable it goes
+    /// into the ray's cell.
+    void RecordBlocker(ThreadState& ts, int source, const Vec3& org, const Vec3& dir,
                        int instance, int surface) const;
     /// After a shadow ray found an opaque surface within `reach`: finds the
     /// first one (the occlusion query does not say which) and records it.

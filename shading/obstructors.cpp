@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <variant>
+#include <vector>
 
 #include "core/conventions.h"
 
@@ -131,63 +132,90 @@ ObstructorLayout MakeObstructorLayout(const LightSource& src, const Vec3& cubeOr
     return layout;
 }
 
-void ForEachObstructorFillRay(const ObstructorLayout& layout, const LightSource& src,
-                              FunctionRef<void(const Vec3&, const Vec3&)> cast) {
-    switch (layout.kind) {
-        case ObstructorLayout::Kind::None: return;
-        case ObstructorLayout::Kind::Distant: {
-            // Parallel rays from the centre of each cell of the plane, into the scene.
-            const Vec3 dir = -src.location;
-            for (int i = 2 * kR - 1; i >= 0; --i) {
-                for (int j = 2 * kR - 1; j >= 0; --j) {
-                    Vec3 org = layout.corner;
-                    org[layout.axis1] += (i + 0.5) / (2 * kR * layout.inverseWidth1);
-                    org[layout.axis2] += (j + 0.5) / (2 * kR * layout.inverseWidth2);
-                    cast(org, dir);
+namespace {
+
+/// The directions of Radiance's fill rays for a flat or a radial table, by
+/// cell: for a flat source in its frame (u, v, normal), for a radial one in
+/// the world's axes. They are the same for every source of the kind, so they
+/// are found once, by casting each of Radiance's directions back through
+/// Cell(); initobscache() casts them in this order.
+std::vector<Vec3> FillDirections(ObstructorLayout::Kind kind) {
+    ObstructorLayout canonical;
+    canonical.kind = kind;
+    canonical.u = {1, 0, 0};
+    canonical.v = {0, 1, 0};
+    canonical.normal = {0, 0, 1};
+    std::vector<Vec3> byCell(static_cast<std::size_t>(canonical.CellCount()));
+    const auto add = [&](const Vec3& dir) {
+        const int cell = canonical.Cell(Vec3{}, -dir);
+        if (cell >= 0 && cell < canonical.CellCount()) byCell[static_cast<std::size_t>(cell)] = dir;
+    };
+    if (kind == ObstructorLayout::Kind::Flat) {
+        // The front face of the cube around the normal...
+        for (int i = kR - 1; i >= 0; --i) {
+            for (int j = kR - 1; j >= 0; --j) {
+                add(Normalize({2.0 / kR * (i + 0.5) - 1.0, 2.0 / kR * (j + 0.5) - 1.0, 1.0}));
+            }
+        }
+        // ...and the front halves of its four sides.
+        for (int k = 1; k >= 0; --k) {
+            for (int i = kR - 1; i >= 0; --i) {
+                for (int j = (kR >> 1) - 1; j >= 0; --j) {
+                    const double d = 2.0 / kR * (i + 0.5) - 1.0;
+                    Vec3 dir = k ? Vec3{1, d, 0} : Vec3{d, 1, 0};
+                    dir.z = 1.0 - 2.0 / kR * (j + 0.5);
+                    dir = Normalize(dir);
+                    add(dir);
+                    add({-dir.x, -dir.y, dir.z});  // mirrored about the normal
                 }
             }
-            return;
         }
-        case ObstructorLayout::Kind::Flat: {
-            // From just in front of the centre, through the centre of each cell.
-            const Vec3 org = src.location + src.normal * (0.01 * src.radius);
+    } else {
+        for (int k = 5; k >= 0; --k) {
+            const int a = k % 3, a1 = (k + 1) % 3, a2 = (k + 2) % 3;
             for (int i = kR - 1; i >= 0; --i) {
                 for (int j = kR - 1; j >= 0; --j) {
-                    const double du = 2.0 / kR * (i + 0.5) - 1.0, dv = 2.0 / kR * (j + 0.5) - 1.0;
-                    cast(org, Normalize(src.normal + layout.u * du + layout.v * dv));
+                    Vec3 dir;
+                    dir[a] = k < 3 ? 1.0 : -1.0;
+                    dir[a1] = 2.0 / kR * (i + 0.5) - 1.0;
+                    dir[a2] = 2.0 / kR * (j + 0.5) - 1.0;
+                    add(Normalize(dir));
                 }
             }
-            for (int k = 1; k >= 0; --k) {
-                for (int i = kR - 1; i >= 0; --i) {
-                    for (int j = (kR >> 1) - 1; j >= 0; --j) {
-                        const double d = 2.0 / kR * (i + 0.5) - 1.0;
-                        Vec3 dir = k ? layout.u + layout.v * d : layout.v + layout.u * d;
-                        dir = Normalize(dir + src.normal * (1.0 - 2.0 / kR * (j + 0.5)));
-                        cast(org, dir);
-                        // The opposite side, mirrored about the normal.
-                        cast(org, src.normal * (2.0 * Dot(dir, src.normal)) - dir);
-                    }
-                }
-            }
-            return;
-        }
-        case ObstructorLayout::Kind::Radial: {
-            for (int k = 5; k >= 0; --k) {
-                const int a = k % 3, a1 = (k + 1) % 3, a2 = (k + 2) % 3;
-                for (int i = kR - 1; i >= 0; --i) {
-                    for (int j = kR - 1; j >= 0; --j) {
-                        Vec3 dir;
-                        dir[a] = k < 3 ? 1.0 : -1.0;
-                        dir[a1] = 2.0 / kR * (i + 0.5) - 1.0;
-                        dir[a2] = 2.0 / kR * (j + 0.5) - 1.0;
-                        dir = Normalize(dir);
-                        cast(src.location + dir * (1.05 * src.radius), dir);
-                    }
-                }
-            }
-            return;
         }
     }
+    return byCell;
+}
+
+}  // namespace
+
+ObstructorFillRay MakeObstructorFillRay(const ObstructorLayout& layout, const LightSource& src,
+                                        int cell) {
+    switch (layout.kind) {
+        case ObstructorLayout::Kind::Distant: {
+            // Parallel to the source direction, into the scene, from the
+            // centre of the cell on the plane.
+            const int i = cell / (2 * kR), j = cell % (2 * kR);
+            Vec3 org = layout.corner;
+            org[layout.axis1] += (i + 0.5) / (2 * kR * layout.inverseWidth1);
+            org[layout.axis2] += (j + 0.5) / (2 * kR * layout.inverseWidth2);
+            return {org, -src.location};
+        }
+        case ObstructorLayout::Kind::Flat: {
+            // From just in front of the centre, through the centre of the cell.
+            static const std::vector<Vec3> kDirs = FillDirections(ObstructorLayout::Kind::Flat);
+            const Vec3& d = kDirs[static_cast<std::size_t>(cell)];
+            return {src.location + src.normal * (0.01 * src.radius),
+                    layout.u * d.x + layout.v * d.y + src.normal * d.z};
+        }
+        case ObstructorLayout::Kind::Radial: {
+            static const std::vector<Vec3> kDirs = FillDirections(ObstructorLayout::Kind::Radial);
+            const Vec3& d = kDirs[static_cast<std::size_t>(cell)];
+            return {src.location + d * (1.05 * src.radius), d};
+        }
+        case ObstructorLayout::Kind::None: break;
+    }
+    return {};
 }
 
 bool IsReliableBlocker(const Scene& scene, const Surface& surface) {

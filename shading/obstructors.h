@@ -15,7 +15,6 @@
 // at its first use); DirectLight keeps the tables, one set per thread.
 #pragma once
 
-#include "core/function_ref.h"
 #include "core/vecmath.h"
 #include "scene/scene.h"
 #include "shading/light_sources.h"
@@ -54,10 +53,20 @@ struct ObstructorLayout {
 ObstructorLayout MakeObstructorLayout(const LightSource& src, const Vec3& cubeOrigin,
                                       double cubeSize);
 
-/// The rays initobscache() casts outward from `src` to fill its table: one
-/// `cast(org, dir)` per cell (dir unit, away from the source).
-void ForEachObstructorFillRay(const ObstructorLayout& layout, const LightSource& src,
-                              FunctionRef<void(const Vec3&, const Vec3&)> cast);
+/// A ray cast outward from a source to fill one cell.
+struct ObstructorFillRay {
+    Vec3 org;
+    Vec3 dir;  // unit, away from the source
+};
+
+/// The ray initobscache() casts outward from `src` for `cell` (in
+/// [0, CellCount())): the first reliable blocker along it, as if it had
+/// stopped a ray aimed back at the source, is the cell's first entry. Each
+/// of Radiance's fill rays writes only its own cell, so filling a cell when
+/// it is first needed gives the table Radiance fills whole at the source's
+/// first use, for a fraction of the rays when there are many sources.
+ObstructorFillRay MakeObstructorFillRay(const ObstructorLayout& layout, const LightSource& src,
+                                        int cell);
 
 /// True if `surface` (one of the scene's own) may be recorded as a blocker:
 /// its material is one Radiance marks opaque (plastic, metal, plastic2,

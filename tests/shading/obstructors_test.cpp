@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 //
 // The obstructor cache's layout (shading/obstructors.h, Radiance's
-// srcobstr.c): each ray that fills a table lands in a cell of its own, and
-// together they fill every cell once, so that a source's cells all get
-// their first blocker; rays with no cell are told apart.
+// srcobstr.c): every cell has a fill ray of its own, whose blocker, as
+// Radiance records it, lands in that cell and no other; rays with no cell
+// are told apart.
 #include "shading/obstructors.h"
 
 #include <map>
@@ -22,20 +22,16 @@ Scene Build(const std::string& text) {
     return BuildScene(ReadSceneObjects(in, "t.rad", {}, {}), {});
 }
 
-/// The cells of the rays aimed back at the source along each fill ray, from
-/// a point `back` along it; every one must be a cell of the table.
-std::multiset<int> FillCells(const ObstructorLayout& layout, const LightSource& src, double back) {
-    std::multiset<int> cells;
-    ForEachObstructorFillRay(layout, src, [&](const Vec3& org, const Vec3& dir) {
-        cells.insert(layout.Cell(org + dir * back, -dir));
-    });
-    return cells;
-}
-
-void ExpectEveryCellOnce(const ObstructorLayout& layout, const LightSource& src, double back) {
-    const std::multiset<int> cells = FillCells(layout, src, back);
-    ASSERT_EQ(static_cast<int>(cells.size()), layout.CellCount());
-    for (int c = 0; c < layout.CellCount(); ++c) EXPECT_EQ(cells.count(c), 1u) << "cell " << c;
+/// Each cell's fill ray is a unit ray away from the source, and the ray
+/// aimed back at the source along it, from a point `back` along it, lands in
+/// that cell.
+void ExpectEveryCellItsOwnRay(const ObstructorLayout& layout, const LightSource& src,
+                              double back) {
+    for (int c = 0; c < layout.CellCount(); ++c) {
+        const ObstructorFillRay fill = MakeObstructorFillRay(layout, src, c);
+        ASSERT_NEAR(Length(fill.dir), 1.0, 1e-12) << "cell " << c;
+        EXPECT_EQ(layout.Cell(fill.org + fill.dir * back, -fill.dir), c);
+    }
 }
 
 const char* const kLights = R"(
@@ -54,7 +50,7 @@ void plastic grey 0 0 5 .5 .5 .5 0 0
 grey polygon floor 0 0 12 0 0 0  6 0 0  6 5 0  0 5 0
 )";
 
-TEST(Obstructors, EachFillRayHasACellOfItsOwn) {
+TEST(Obstructors, EachCellHasAFillRayOfItsOwn) {
     const Scene scene = Build(kLights);
     std::vector<std::string> warnings;
     Rng rng(1);
@@ -78,9 +74,12 @@ TEST(Obstructors, EachFillRayHasACellOfItsOwn) {
             // The cell comes from the ray's origin, carried along the source
             // direction to the plane the fill rays start from: any point
             // along a fill ray past the plane lands in that ray's cell...
-            ExpectEveryCellOnce(layout, src, 2.0);
+            ExpectEveryCellItsOwnRay(layout, src, 2.0);
             // ...and a point on the source's side of the plane in none.
-            for (int c : FillCells(layout, src, -0.5)) EXPECT_EQ(c, -1);
+            for (int c = 0; c < layout.CellCount(); ++c) {
+                const ObstructorFillRay fill = MakeObstructorFillRay(layout, src, c);
+                EXPECT_EQ(layout.Cell(fill.org - fill.dir * 0.5, -fill.dir), -1);
+            }
             continue;
         }
         const bool flat = name == "panel";
@@ -89,8 +88,8 @@ TEST(Obstructors, EachFillRayHasACellOfItsOwn) {
         EXPECT_EQ(layout.CellCount(),
                   (flat ? 3 : 6) * kObstructorResolution * kObstructorResolution);
         // Directions only: the cell is the same wherever along the ray.
-        ExpectEveryCellOnce(layout, src, 0.0);
-        ExpectEveryCellOnce(layout, src, -7.5);
+        ExpectEveryCellItsOwnRay(layout, src, 0.0);
+        ExpectEveryCellItsOwnRay(layout, src, -7.5);
         if (flat) {
             // From behind a flat source, no cell.
             EXPECT_EQ(layout.Cell({1.5, 1.5, 4}, {0, 0, -1}), -1);
