@@ -5,8 +5,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <cstdio>
 
 #include "core/error.h"
 
@@ -87,17 +86,32 @@ std::vector<std::string> SplitWords(std::string_view text) {
 }
 
 std::optional<std::vector<std::string>> ReadWords(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
+    // stdio rather than a stream: libstdc++'s streams throw on a read error
+    // (a directory opens, then fails to read). Radiance's wordfile() takes a
+    // failed read as the end of the words, and so does this.
+    std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return std::nullopt;
-    const std::string text{std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+    std::string text;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+    std::fclose(f);
     return SplitWords(text);
 }
 
 std::vector<std::string> ExpandArgument(const std::string& arg) {
     if (arg.empty() || (arg[0] != '@' && arg[0] != '$')) return {arg};
     if (arg[0] == '@') {
-        std::optional<std::vector<std::string>> words = ReadWords(arg.substr(1));
-        if (!words) ThrowSystemError("cannot expand '" + arg + "': " + std::strerror(ENOENT));
+        // A bare '@' names no file; Radiance reports it without a cause.
+        const int saved = errno;
+        errno = 0;
+        std::optional<std::vector<std::string>> words;
+        if (arg.size() > 1) words = ReadWords(arg.substr(1));
+        const int cause = errno;
+        errno = saved;
+        if (!words) {
+            ThrowSystemError("cannot expand '" + arg + "'" +
+                             (cause != 0 ? std::string(": ") + std::strerror(cause) : ""));
+        }
         return std::move(*words);
     }
     const char* value = std::getenv(arg.c_str() + 1);

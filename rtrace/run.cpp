@@ -97,9 +97,12 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
     }
 
     const int x = opt.xResolution, y = opt.yResolution;
-    // rtrace.c: -x with -y counts pixels, -y alone counts records; 0 = all input.
-    std::uint64_t remaining = x > 1 ? static_cast<std::uint64_t>(x) * static_cast<std::uint64_t>(y)
-                                    : static_cast<std::uint64_t>(std::max(y, 0));
+    // rtrace.c: -x with -y counts pixels, -y alone counts records; 0 = all
+    // input. Its count is unsigned, so a negative one never runs out: all
+    // input is read, and its end is "unexpected", as in Radiance.
+    std::uint64_t remaining =
+        x > 1 ? static_cast<std::uint64_t>(static_cast<std::int64_t>(x) * y)
+              : static_cast<std::uint64_t>(static_cast<std::int64_t>(y));
     const bool counting = remaining > 0;
     // Periodic flush every x records unless this is a picture (x and y given).
     const long flushInterval = (y > 0 && x > 1) ? 0 : x;

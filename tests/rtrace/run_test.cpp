@@ -203,6 +203,11 @@ TEST(RtraceRun, CountsRecordsWithY) {
     EXPECT_EQ(r.err, "rtrace: warning - unexpected EOF on input\n");
     r = RunWith({"-h", "-w-", "-y", "5", "s.rad"}, "0 0 0 0 0 1\n");
     EXPECT_EQ(r.err, "");
+    // A negative count (unsigned in rtrace.c) reads all input and warns at its end.
+    r = RunWith({"-h", "-y", "-1", "s.rad"}, "0 0 0 0 0 1\n0 0 0 0 0 1\n");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, std::string(kValueLine) + kValueLine);
+    EXPECT_EQ(r.err, "rtrace: warning - unexpected EOF on input\n");
 }
 
 TEST(RtraceRun, PictureResolutionLine) {
@@ -242,7 +247,17 @@ TEST(RtraceRun, CommandLineErrors) {
     EXPECT_EQ(s.built, 0);  // all found before the scene is loaded
     r = RunWith({"@/no/such/file", "s.rad"}, "", &s);
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err.rfind("rtrace: system - cannot expand '@/no/such/file'", 0), 0u);
+    EXPECT_EQ(r.err, "rtrace: system - cannot expand '@/no/such/file': No such file or directory\n");
+    // A bare '@' names no file: Radiance gives no cause.
+    r = RunWith({"@", "s.rad"}, "", &s);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "rtrace: system - cannot expand '@'\n");
+    // A directory reads as no words, as Radiance's wordfile() reads it (it
+    // used to be an internal error from the stream's failed read).
+    r = RunWith({"-h", "@/", "s.rad"}, "0 0 0 0 0 1\n", &s);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out, kValueLine);
 }
 
 TEST(RtraceRun, SceneErrorsUseExitCodes) {
