@@ -77,10 +77,14 @@ OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn
     for (std::size_t i = 0; i < vs.size(); ++i) {
         char c = vs[i];
         if (c == 't' || c == 'T') {
+            // Radiance follows shadow rays for any T, a trailing one too
+            // (-ovtLT traces them); a trailing t/T adds nothing else.
             if (c == 'T') spec.traceShadows = true;
-            // A trailing t/T has nothing to trace and is ignored.
             if (i + 1 == vs.size()) break;
+            // Each t/T starts the trace list again (rtrace.c's setrtoutput()):
+            // -ovtLtm traces m alone.
             table = &spec.traceFields;
+            table->clear();
             spec.trace = true;
             spec.castOnly = false;
             continue;
@@ -95,7 +99,10 @@ OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn
             warn(std::string("-ot") + c + " accuracy depends on -aa 0 -as 0");
     }
     if (!spec.trace) spec.traceShadows = false;
-    spec.components = spec.trace ? 0 : components;
+    // Radiance counts the components of every letter, the trace list's
+    // included, and gives no NCOMP when trace lines have fields: -ovtt has
+    // NCOMP=3, and -ovtLtt, whose second t empties the list, NCOMP=4.
+    spec.components = spec.traceFields.empty() ? components : 0;
     if (irradiance && spec.castOnly) ThrowUserError("-I+ and -i+ options require some value output");
     for (char c : spec.fields) {
         if (c == 'V' || c == 'W') warn("-oVW options require trace mode");

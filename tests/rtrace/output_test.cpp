@@ -57,6 +57,28 @@ TEST(OutputSpecParse, ComponentCounts) {
     EXPECT_EQ(SpecOf("vrx").components, 9);
     EXPECT_EQ(SpecOf("vtv").components, 0);  // trace mode has no NCOMP
     EXPECT_EQ(SpecOf("vt").components, 3);   // trailing t ignored
+    // Radiance 5.4a: trace mode with an empty trace list has NCOMP, counting
+    // the letters the second t dropped from it too.
+    EXPECT_EQ(SpecOf("vtt").components, 3);
+    EXPECT_EQ(SpecOf("vtLtt").components, 4);
+    EXPECT_EQ(SpecOf("vTt").components, 3);
+}
+
+/// A second t starts the trace list again, as in Radiance 5.4a (-ovtLtm
+/// traces the modifier alone).
+TEST(OutputSpecParse, EachTStartsTheTraceListAgain) {
+    OutputSpec s = SpecOf("vtLtm");
+    EXPECT_EQ(s.fields, "v");
+    EXPECT_EQ(s.traceFields, "m");
+    EXPECT_FALSE(s.traceShadows);
+    s = SpecOf("vtLTm");
+    EXPECT_EQ(s.traceFields, "m");
+    EXPECT_TRUE(s.traceShadows);
+    s = SpecOf("vTLtm");
+    EXPECT_TRUE(s.traceShadows);  // once set, a later t does not clear it
+    s = SpecOf("vtLT");
+    EXPECT_TRUE(s.traceShadows);  // a trailing T still traces shadow rays
+    EXPECT_EQ(s.traceFields, "L");
 }
 
 TEST(OutputSpecParse, SplitsTraceSection) {
