@@ -595,6 +595,10 @@ CommandLine ParseCommandLine(std::span<const std::string> argsIn, const WarningS
             return cl;
         }
         const OptionRow* row = FindRow(arg);
+        // Radiance's pmapopt.c reads any -am... as the photon radius option
+        // and rejects one with letters after it in that option's words.
+        if (!row && arg.size() > 3 && arg.compare(0, 3, "-am") == 0)
+            ThrowUserError("invalid max photon search radius");
         if (!row) CommandLineError(arg);
         int used = ApplyRow(*row, o, args, i, warn);
         if (used < 0) CommandLineError(arg);

@@ -308,6 +308,10 @@ TEST(RtraceOptionsParse, RejectsBadValuesAndUnknownOptions) {
     EXPECT_EQ(ErrorOf({"-fadd", "s.rad"}), "command line error at '-fadd'");
     EXPECT_EQ(ErrorOf({"-n", "0", "s.rad"}), "bad number of processes");
     EXPECT_EQ(ErrorOf({"-am", "0", "s.rad"}), "invalid max photon search radius");  // Radiance 5.4a's words
+    // Any -am... with more letters, with or without a number (Radiance 5.4a).
+    EXPECT_EQ(ErrorOf({"-amx", "1", "s.rad"}), "invalid max photon search radius");
+    EXPECT_EQ(ErrorOf({"-amm", "s.rad"}), "invalid max photon search radius");
+    EXPECT_EQ(ErrorOf({"-apx", "f", "s.rad"}), "command line error at '-apx'");
     EXPECT_EQ(ErrorOf({"-ab", "2"}), "missing octree argument");
     EXPECT_EQ(ErrorOf({"s.rad", "-ab", "2"}), "command line error at 's.rad'");
     EXPECT_EQ(ErrorOf({"-n", "2", "-P", "pf", "s.rad"}),
