@@ -17,11 +17,15 @@ constexpr int kR = kObstructorResolution;
 
 /// Radiance's (int) conversion of a cell coordinate (truncation toward
 /// zero), or a value outside every table for coordinates too large to
-/// convert (a ray from very far outside the region).
+/// convert or not numbers (a ray from very far outside the region), small
+/// enough that the index arithmetic below cannot overflow.
 int Truncate(double x) {
-    if (!(std::fabs(x) < 1e9)) return -(1 << 30);
+    if (!(std::fabs(x) < 1e6)) return -(1 << 20);
     return static_cast<int>(x);
 }
+
+/// `cell` if it lies in a table of `count` cells, else -1 (no cell).
+int Bounded(long cell, int count) { return cell < 0 || cell >= count ? -1 : static_cast<int>(cell); }
 
 }  // namespace
 
@@ -47,11 +51,9 @@ int ObstructorLayout::Cell(const Vec3& org, const Vec3& dir) const {
                                    (org[axis1] + t * normal[axis1] - corner[axis1]));
             const int j = Truncate(2 * kR * inverseWidth2 *
                                    (org[axis2] + t * normal[axis2] - corner[axis2]));
-            if (i < -(1 << 20) || j < -(1 << 20)) return -1;
             // As Radiance, only the combined index is bounded: a j past the
             // edge lands in the next row.
-            const long cell = 2L * kR * i + j;
-            return cell < 0 || cell >= 4L * kR * kR ? -1 : static_cast<int>(cell);
+            return Bounded(2L * kR * i + j, CellCount());
         }
         case Kind::Flat: {
             // The direction from the source to the point, in the source's frame.
@@ -59,16 +61,22 @@ int ObstructorLayout::Cell(const Vec3& org, const Vec3& dir) const {
             if (s2 < 0) return -1;  // behind the source
             const double m0 = std::fabs(s0), m1 = std::fabs(s1);
             constexpr double kScale = kR * (0.5 - kFtiny);
+            long cell;
             if (s2 >= m0 && s2 >= m1) {  // the cube's front face
-                return kR * Truncate(kScale * (1 + s0 / s2)) + Truncate(kScale * (1 + s1 / s2));
+                cell = long{kR} * Truncate(kScale * (1 + s0 / s2)) + Truncate(kScale * (1 + s1 / s2));
+            } else {
+                constexpr int kHalf = ((kR + 1) >> 1) * kR;  // cells in one half side
+                if (m0 >= m1) {  // the sides across u
+                    cell = kR * kR + (s0 < 0 ? kHalf : 0) +
+                           long{kR} * Truncate(kScale * (1 - s2 / m0)) +
+                           Truncate(kScale * (1 + s1 / m0));
+                } else {
+                    cell = kR * kR + 2 * kHalf + (s1 < 0 ? kHalf : 0) +
+                           long{kR} * Truncate(kScale * (1 - s2 / m1)) +
+                           Truncate(kScale * (1 + s0 / m1));
+                }
             }
-            constexpr int kHalf = ((kR + 1) >> 1) * kR;  // cells in one half side
-            if (m0 >= m1) {  // the sides across u
-                return kR * kR + (s0 < 0 ? kHalf : 0) + kR * Truncate(kScale * (1 - s2 / m0)) +
-                       Truncate(kScale * (1 + s1 / m0));
-            }
-            return kR * kR + 2 * kHalf + (s1 < 0 ? kHalf : 0) +
-                   kR * Truncate(kScale * (1 - s2 / m1)) + Truncate(kScale * (1 + s0 / m1));
+            return Bounded(cell, CellCount());
         }
         case Kind::Radial: {
             // The cube face the direction to the source points through.
@@ -83,9 +91,10 @@ int ObstructorLayout::Cell(const Vec3& org, const Vec3& dir) const {
             if (amax <= 0) return -1;
             const int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
             constexpr double kScale = kR * (0.5 - kFtiny);
-            return 2 * kR * kR * a + (dir[a] < 0 ? kR * kR : 0) +
-                   kR * Truncate(kScale * (1 + dir[a1] / amax)) +
-                   Truncate(kScale * (1 + dir[a2] / amax));
+            return Bounded(2L * kR * kR * a + (dir[a] < 0 ? kR * kR : 0) +
+                               long{kR} * Truncate(kScale * (1 + dir[a1] / amax)) +
+                               Truncate(kScale * (1 + dir[a2] / amax)),
+                           CellCount());
         }
     }
     return -1;

@@ -6,6 +6,7 @@
 // are told apart.
 #include "shading/obstructors.h"
 
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -62,6 +63,14 @@ TEST(Obstructors, EachCellHasAFillRayOfItsOwn) {
         const std::string& name = scene.surfaces[static_cast<size_t>(src.surface)].name;
         kinds.insert(layout.kind);
         SCOPED_TRACE(name);
+        // What is not a number has no cell: for a distant source the origin
+        // (its cells are places on a plane), for the others the direction.
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        if (layout.kind == ObstructorLayout::Kind::Distant) {
+            EXPECT_EQ(layout.Cell({nan, nan, nan}, {0, 0, 1}), -1);
+        } else if (layout.kind != ObstructorLayout::Kind::None) {
+            EXPECT_EQ(layout.Cell({1, 1, 1}, {nan, nan, nan}), -1);
+        }
         if (name == "spotlamp" || name == "halobulb" || name == "sky") {
             // Spotlights, glows with a radius and skies are not cached.
             EXPECT_EQ(layout.kind, ObstructorLayout::Kind::None);
