@@ -9,7 +9,6 @@
 #include "core/function_ref.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
-#include "raycore/raycore.h"
 #include "shading/shading_state.h"
 #include "shading/traced_ray.h"
 
