@@ -151,10 +151,10 @@ bool DirectLight::CachedBlocked(ThreadState& ts, int source, const Vec3& org, co
     if (cell < 0) return false;
     const int blocker = CachedSurface(Obstructors(ts, source), source, cell);
     if (blocker < 0) return false;
+    // Either side: the materials recorded stop shadow rays from behind too,
+    // -bv- or not (normal.c's "easy shadow test" comes first).
     const auto hit = s_.core.IntersectSurfaceSide(blocker, org, dir);
     if (!hit) return false;
-    // Without back faces (-bv-) light passes a surface from behind.
-    if (hit->back && !s_.shading.backfaceVisible) return false;
     // A blocker beyond a local source does not shade it (Radiance checks
     // that the source is not in front).
     return layout.kind == ObstructorLayout::Kind::Distant || hit->t < distance;

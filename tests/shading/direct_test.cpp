@@ -271,5 +271,30 @@ fog sphere fogball 0 0 4 0 0 1 3
     EXPECT_GT(runs.stats[true].samplesObstructed, 0u);
 }
 
+/// The materials the cache records stop shadow rays from behind too, -bv-
+/// or not (Radiance's normal.c tests for a shadow ray before the side), so a
+/// cached surface met from behind blocks: sensors under a plate that faces
+/// the bulb are dark with the cache as without, and the cache drops their
+/// samples as Radiance 5.4a's does (its -oT trace shows no shadow ray there).
+TEST(DirectLight, ObstructorCacheBlocksFromBehindWithoutBackfacesToo) {
+    const Scene scene = Build(R"(
+void light lamp 0 0 3 50 50 50
+lamp sphere bulb 0 0 4 0 0 2 .1
+void plastic grey 0 0 5 .5 .5 .5 0 0
+grey polygon plate 0 0 12 -1 -1 1  1 -1 1  1 1 1  -1 1 1
+)");
+    std::vector<std::pair<Vec3, Vec3>> rays;
+    for (int i = 0; i < 10; ++i) rays.push_back({{-0.5 + 0.1 * i, 0.05 * i, 0}, {0, 0, 1}});
+    ShadingOptions shading;
+    shading.irradiance = IrradianceMode::Immediate;
+    shading.uncorrelated = false;
+    shading.backfaceVisible = false;
+    const CacheRuns runs = TraceWithoutAndWithCache(scene, rays, shading);
+    EXPECT_EQ(runs.values[false], runs.values[true]);
+    for (const Rgb& v : runs.values[true]) EXPECT_EQ(Bright(v), 0.0);
+    EXPECT_EQ(runs.stats[true].samplesObstructed, rays.size());
+    EXPECT_EQ(runs.stats[true].shadowRays, 0u);
+}
+
 }  // namespace
 }  // namespace rt
