@@ -655,7 +655,9 @@ bool SampleWholeSource(const std::vector<LightSource>& sources, int source, cons
     const LightSource& src = sources[static_cast<std::size_t>(source)];
     if (src.skip) return false;
     const Partition whole{{0, 0, 0}, {kMaxParts, kMaxParts, kMaxParts}};
-    return SamplePartition(src, source, whole, false, point, options, rng, sample);
+    if (!SamplePartition(src, source, whole, false, point, options, rng, sample)) return false;
+    sample.whole = sample.alone = true;
+    return true;
 }
 
 }  // namespace rt

@@ -43,14 +43,13 @@ int ObstructorLayout::Cell(const Vec3& org, const Vec3& dir) const {
     switch (kind) {
         case Kind::None: return -1;
         case Kind::Distant: {
-            // Where the ray's line toward the source crosses the plane; `normal`
-            // holds the direction to the source here.
-            const double t = (corner[axis] - org[axis]) / normal[axis];
+            // Where the ray's line toward the source crosses the plane.
+            const double t = (corner[axis] - org[axis]) / toSource[axis];
             if (t <= kFtiny) return -1;  // the point lies outside the region
             const int i = Truncate(2 * kR * inverseWidth1 *
-                                   (org[axis1] + t * normal[axis1] - corner[axis1]));
+                                   (org[axis1] + t * toSource[axis1] - corner[axis1]));
             const int j = Truncate(2 * kR * inverseWidth2 *
-                                   (org[axis2] + t * normal[axis2] - corner[axis2]));
+                                   (org[axis2] + t * toSource[axis2] - corner[axis2]));
             // As Radiance, only the combined index is bounded: a j past the
             // edge lands in the next row.
             return Bounded(2L * kR * i + j, CellCount());
@@ -119,7 +118,7 @@ ObstructorLayout MakeObstructorLayout(const LightSource& src, const Vec3& cubeOr
         const int ax = layout.axis, ax1 = (ax + 1) % 3, ax2 = (ax + 2) % 3;
         layout.axis1 = ax1;
         layout.axis2 = ax2;
-        layout.normal = loc;
+        layout.toSource = loc;
         // The cube's face toward the source, widened to take in the cube's
         // shadow cast along the source direction.
         layout.corner = cubeOrigin;
@@ -230,9 +229,8 @@ ObstructorFillRay MakeObstructorFillRay(const ObstructorLayout& layout, const Li
 bool IsReliableBlocker(const Scene& scene, const Surface& surface) {
     if (std::holds_alternative<DistantSource>(surface.shape)) return false;
     if (scene.MayBeClipped(surface.modifierId)) return false;  // passed inside antimatter
-    for (int p : surface.patterns) {
-        if (scene.patterns[static_cast<std::size_t>(p)].kind == ModifierKind::Mixture) return false;
-    }
+    // No material: void, a hole, or a mixture (which ends the modifier chain
+    // with no material, Surface::patterns), as findmaterial() finds none.
     if (surface.material < 0) return false;
     switch (scene.materials[static_cast<std::size_t>(surface.material)].type) {
         case MaterialType::Plastic:

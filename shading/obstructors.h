@@ -38,6 +38,7 @@ struct ObstructorLayout {
     int axis = 0, axis1 = 1, axis2 = 2;
     Vec3 corner;
     double inverseWidth1 = 0, inverseWidth2 = 0;
+    Vec3 toSource;  // unit direction to the source
     // Flat: unit vectors across the source (u, v) and its normal.
     Vec3 u, v, normal;
 
