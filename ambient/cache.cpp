@@ -98,7 +98,7 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
     // The candidates are gathered first and their records prefetched, so that
     // the memory latency of each record (the lookup's main cost where
     // queries are dense) overlaps the rest of the traversal; they are then
-    // weighed in the order found, as before.
+    // weighed (below).
     constexpr std::size_t kInline = 32;
     std::uint32_t inlineIds[kInline];
     std::vector<std::uint32_t> moreIds;
@@ -165,8 +165,16 @@ std::optional<Rgb> AmbientCache::Interpolate(const AmbientQuery& q, int* records
         weightSum += w;
         ++*recordsUsed;
     };
-    for (std::size_t k = 0; k < std::min(found, kInline); ++k) weigh(inlineIds[k]);
-    for (const std::uint32_t id : moreIds) weigh(id);
+    // Weighed in record order, whatever order the index found them in: the
+    // sums' rounding, and so the output, then does not depend on the index.
+    if (found <= kInline) {
+        std::sort(inlineIds, inlineIds + found);
+        for (std::size_t k = 0; k < found; ++k) weigh(inlineIds[k]);
+    } else {
+        moreIds.insert(moreIds.end(), inlineIds, inlineIds + kInline);
+        std::sort(moreIds.begin(), moreIds.end());
+        for (const std::uint32_t id : moreIds) weigh(id);
+    }
     if (weightSum <= kFtiny) return std::nullopt;
     return sum / weightSum;
 }

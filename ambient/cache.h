@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// The in-memory irradiance cache: records indexed by one SphereOctree per
+// The in-memory irradiance cache: records indexed by one SphereGrid per
 // bounce depth and
 // interpolated with Ward's split-sphere weights and Ward & Heckbert's
 // first-order gradients (radiance-notes.md §4.12, Radiance ≤ 4.2
@@ -23,7 +23,7 @@
 #include "core/function_ref.h"
 #include "core/rgb.h"
 #include "core/vecmath.h"
-#include "octree/sphere_octree.h"
+#include "octree/sphere_grid.h"
 
 namespace rt {
 
@@ -126,7 +126,7 @@ private:
     AmbientLimits limits_;
     Vec3 indexOrigin_;
     double indexSize_;
-    std::vector<SphereOctree> indexByLevel_;  // [level]: records of that depth only
+    std::vector<SphereGrid> indexByLevel_;  // [level]: records of that depth only
     RecordBlocks records_;
     double logBrightSum_ = 0;
     int logBrightCount_ = 0;

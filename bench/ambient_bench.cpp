@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 //
 // Google Benchmark microbenchmarks of the irradiance cache's parts, apart from
-// ray tracing: octree lookup (SphereOctree::ForEachContaining), cache
+// ray tracing: record index lookup (SphereGrid::ForEachContaining), cache
 // interpolation (AmbientCache::Interpolate), hemisphere sampling
 // (SampleHemisphere with an analytic trace function, so only the sampler and
 // gradient code is timed) and record creation (MakeClassicRecord).
-//   build/bin/lazyrad_bench --benchmark_filter=Octree
+//   build/bin/lazyrad_bench --benchmark_filter=RecordIndex
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -18,14 +18,14 @@
 #include "ambient/hessian.h"
 #include "ambient/limits.h"
 #include "core/random.h"
-#include "octree/sphere_octree.h"
+#include "octree/sphere_grid.h"
 
 namespace {
 
 // n spheres in the unit cube with radii log-uniform in [0.005, 0.05] (a
 // record population of roughly the shape the cornell floor run builds).
-rt::SphereOctree MakeTree(int n, rt::Rng& rng) {
-    rt::SphereOctree tree({0, 0, 0}, 1.0);
+rt::SphereGrid MakeTree(int n, rt::Rng& rng) {
+    rt::SphereGrid tree({0, 0, 0}, 1.0);
     for (int i = 0; i < n; ++i) {
         const rt::Vec3 c(rng.Uniform(), rng.Uniform(), rng.Uniform());
         const double r = 0.005 * std::pow(10.0, rng.Uniform());
@@ -34,9 +34,9 @@ rt::SphereOctree MakeTree(int n, rt::Rng& rng) {
     return tree;
 }
 
-void BM_OctreeLookup(benchmark::State& state) {
+void BM_RecordIndexLookup(benchmark::State& state) {
     rt::Rng rng(1);
-    const rt::SphereOctree tree = MakeTree(static_cast<int>(state.range(0)), rng);
+    const rt::SphereGrid tree = MakeTree(static_cast<int>(state.range(0)), rng);
     std::vector<rt::Vec3> queries(4096);
     for (auto& q : queries) q = {rng.Uniform(), rng.Uniform(), rng.Uniform()};
     std::size_t i = 0;
@@ -49,7 +49,7 @@ void BM_OctreeLookup(benchmark::State& state) {
     state.counters["found/query"] =
         static_cast<double>(found) / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_OctreeLookup)->Arg(1000)->Arg(10000)->Arg(100000);
+BENCHMARK(BM_RecordIndexLookup)->Arg(1000)->Arg(10000)->Arg(100000);
 
 // Records on the floor z = 0 of a unit cube, normals up, radius 0.02..0.06,
 // as a cache of `n` first-bounce records; queries are floor points.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //
-// Rough throughput of SphereOctree on an irradiance-cache-like load: records
+// Rough throughput of SphereGrid on an irradiance-cache-like load: records
 // on surfaces (the 6 faces of a box plus 4 interior planes), radii
 // log-uniform over one decade, queries on the same surfaces. Prints numbers;
 // asserts nothing.
@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "octree/sphere_octree.h"
+#include "octree/sphere_grid.h"
 
 namespace {
 
@@ -77,31 +77,31 @@ int main(int argc, char** argv) {
         });
     }
 
-    rt::SphereOctree tree(Vec3(-0.001, -0.001, -0.001), 1.002);
+    rt::SphereGrid tree(Vec3(-0.001, -0.001, -0.001), 1.002);
     auto start = Clock::now();
     for (std::size_t i = 0; i < numRecords; ++i) {
         tree.Insert(centres[i], radii[i], static_cast<std::uint32_t>(i));
     }
     const double insertSeconds = SecondsSince(start);
-    const rt::SphereOctree::TreeStats stats = tree.Stats();
+    const rt::SphereGrid::Shape shape = tree.GetShape();
     std::printf("records %zu  radius ~%.4g  insert %.3f s (%.2f M/s)\n", numRecords, baseRadius,
                 insertSeconds, static_cast<double>(numRecords) / insertSeconds * 1e-6);
-    std::printf("nodes %zu  max depth %d  heap %.1f MB (%.1f B/record)\n", stats.nodes,
-                stats.maxDepth, static_cast<double>(stats.bytes) / 1e6,
-                static_cast<double>(stats.bytes) / static_cast<double>(numRecords));
+    std::printf("cells %zu  entries %zu (%.2f per record)  classes %d  loose %zu\n", shape.cells,
+                shape.listed, static_cast<double>(shape.listed) / static_cast<double>(numRecords),
+                shape.classesUsed, shape.looseItems);
 
     std::size_t sampleNodes = 0, sampleTested = 0, sampleFound = 0;
     for (std::size_t i = 0; i < std::min<std::size_t>(numQueries, 10000); ++i) {
         const auto q = tree.CountVisits(queries[i]);
-        sampleNodes += q.nodesVisited;
+        sampleNodes += q.cellsProbed;
         sampleTested += q.itemsTested;
         sampleFound += q.itemsFound;
     }
     const double sampleN = static_cast<double>(std::min<std::size_t>(numQueries, 10000));
-    std::printf("per query: %.1f nodes, %.1f tests, %.1f hits\n", sampleNodes / sampleN,
+    std::printf("per query: %.1f probes, %.1f tests, %.1f hits\n", sampleNodes / sampleN,
                 sampleTested / sampleN, sampleFound / sampleN);
 
-    // Single thread, template overload.
+    // Single thread, a lambda visitor.
     std::uint64_t checksum = 0;
     start = Clock::now();
     for (const Vec3& q : queries) {
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
                 static_cast<double>(numQueries) / seconds * 1e-6,
                 static_cast<unsigned long long>(checksum));
 
-    // Single thread, std::function overload.
+    // Single thread, the visitor behind a std::function.
     std::uint64_t checksum2 = 0;
     const std::function<void(std::uint32_t)> visit = [&checksum2](std::uint32_t id) {
         checksum2 += id;
