@@ -15,19 +15,24 @@
 //   are at least its diameter wide (the finest class takes all smaller ones),
 //   and into every cell of that class its bounding box meets: at most two per
 //   axis, and for the records of one surface usually two to four in all.
-// * A query probes, in each class holding something, the one cell that
-//   contains p, and tests the spheres listed there. A sphere that contains p
-//   lies in that cell's list, so nothing else need be visited.
+// * A query looks, in each class holding something, at the one cell that
+//   contains p, and tests the spheres listed there: a sphere that contains p
+//   lies in that cell's list, so nothing else need be visited. A bit per
+//   block of cells (32^3 blocks per class) says whether the block holds
+//   anything; only then is the table probed.
 // * Non-empty cells are kept in an open-addressing hash table per class,
-//   keyed by their integer coordinates; the cells' lists are contiguous.
+//   keyed by their integer coordinates; each cell's list is contiguous.
 // * Spheres whose centre lies outside the cube, or whose diameter exceeds
-//   it, are kept in one list that every query scans.
+//   it, are kept in one list that every query scans (as are the few whose
+//   cells would fall outside the class's range, which only a cube far from
+//   the origin for its size can round them into).
 //
-// Against an octree (Radiance's AMBTREE and lazyrad's earlier index), a
-// query makes one memory probe per class instead of walking from the root,
-// and tests only the spheres of its own cell: most records of a run share
-// one size (the largest allowed), and there the octree's cells, several
-// radii wide, made a query test about 50 spheres to find 2.
+// Against an octree (Radiance's AMBTREE and lazyrad's index before this one),
+// a query makes one probe per class instead of walking from the root, and
+// tests only the spheres of its own cell: most records of a run share one
+// size (the largest -ar allows), and the octree's cells, several radii wide,
+// made a query test many times the spheres it found (docs/benchmarks.md,
+// "Record index", also for what that did and did not change in whole runs).
 //
 // Containment is evaluated as dx*dx + dy*dy + dz*dz <= radius*radius in double
 // (d = p - centre), so points exactly on a sphere are inside. A sphere is
@@ -35,9 +40,9 @@
 // covers every point that test can accept whatever the rounding.
 #pragma once
 
-#include <cstddef>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -69,7 +74,7 @@ public:
 
     /// Work done by one query, for tests and tuning.
     struct QueryStats {
-        std::size_t cellsProbed = 0;  ///< hash-table probes, one per class holding spheres
+        std::size_t cellsProbed = 0;  ///< hash-table probes: classes whose block around p holds something
         std::size_t itemsTested = 0;  ///< distance tests made
         std::size_t itemsFound = 0;   ///< spheres containing p
     };
@@ -85,8 +90,8 @@ public:
     };
     Shape GetShape() const;
 
-    /// The class a sphere of `radius` goes to, or -1 for the loose list
-    /// (diameter above the cube's size). For tests.
+    /// The class a sphere of `radius` goes to, or -1 for the loose list (its
+    /// diameter, widened by 1e-9, above the cube's size). For tests.
     int ClassOf(double radius) const;
 
 private:
