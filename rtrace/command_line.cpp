@@ -22,8 +22,6 @@ namespace {
 constexpr const char* kDefaultRaypath = ".:/usr/local/lib/ray";
 // DEFAULT_PMAP_GATHER in Radiance's pmapparm.h.
 constexpr int kDefaultPhotonGather = 40;
-// Radiance's cap on -n.
-constexpr int kMaxProcesses = 64;
 
 [[noreturn]] void CommandLineError(const std::string& arg) {
     ThrowUserError("command line error at '" + arg + "'");
@@ -264,7 +262,6 @@ constexpr std::string_view kNoPretest = "parsed; no pretest is needed (README, D
 
 void CheckProcesses(RtraceOptions& o) {
     if (o.processes <= 0) ThrowUserError("bad number of processes");
-    o.processes = std::min(o.processes, kMaxProcesses);
 }
 
 // -defaults lines that do not follow their kind's layout.

@@ -49,7 +49,7 @@ struct RtraceOptions {
     bool irradianceAtHit = false;  // -i (Radiance's do_irrad); read shading.irradiance
     bool immediateIrradiance = false;  // -I (Radiance's imm_irrad); read shading.irradiance
     std::string errorFile;         // -e: append messages here; empty = stderr
-    int processes = 1;             // -n
+    int processes = 1;             // -n as given (-defaults shows it); see RenderThreads
     int reportSeconds = 0;         // -t: progress interval (lazyrad extension, as rpict's -t)
     int seed = 0;                  // -seed: random seed (lazyrad extension; Radiance uses the
                                    // clock); read shading.seed
@@ -65,6 +65,13 @@ struct RtraceOptions {
     std::vector<PhotonMapOption> photonMaps;  // -ap
     double photonMaxRadius = 0.0;  // -am
 };
+
+/// Threads -n runs: Radiance accepts any positive count and prints it, but
+/// forks at most 64 processes; lazyrad runs at most as many threads.
+inline constexpr int kMaxRenderThreads = 64;
+inline int RenderThreads(const RtraceOptions& o) {
+    return o.processes < 1 ? 1 : (o.processes > kMaxRenderThreads ? kMaxRenderThreads : o.processes);
+}
 
 enum class ValueKind {
     Toggle,    // -h, -h+, -h- ...: bare toggles, suffix in "+1yYtT" sets, "-0nNfF" clears

@@ -124,7 +124,7 @@ void Trace(const CommandLine& cl, std::istream& in, RecordWriter& writer,
     // Rays are evaluated in batches so that -n threads can share them;
     // one process (or trace output, which Radiance never parallelises)
     // evaluates them one at a time, as they arrive.
-    const int threads = spec.trace ? 1 : std::max(1, rendererOptions.processes);
+    const int threads = spec.trace ? 1 : RenderThreads(rendererOptions);
     const std::size_t batchLimit = threads > 1 ? 1024 * static_cast<std::size_t>(threads) : 1;
     std::vector<RayQuery> pending;
     std::vector<RayResult> results;

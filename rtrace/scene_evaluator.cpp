@@ -57,7 +57,7 @@ public:
                    const RtraceOptions& options, const WarningSink& warn)
         : scene_(std::move(scene)), core_(scene_), warn_(warn) {
         cache_ = Renderer::MakeCache(scene_, options.ambient);
-        const int threads = std::max(1, options.processes);
+        const int threads = RenderThreads(options);
         // Set-up warnings ("no light sources found") once, not per thread.
         const auto shared =
             Renderer::Share(scene_, core_, options.shading, options.ambient, warn, cache_);

@@ -85,6 +85,17 @@ TEST(RtraceDefaults, MatchesRadianceByteForByte) {
     EXPECT_EQ(Parse({"-help"}).action, CommandLine::Action::PrintDefaults);
 }
 
+/// Radiance 5.4a prints -n as given ("-n 100"), then forks at most 64
+/// processes (65 with the parent, counted with pgrep); lazyrad printed 64.
+TEST(RtraceDefaults, ShowTheProcessCountAsGivenAndRunAtMost64Threads) {
+    const CommandLine cl = Parse({"-n", "100", "-defaults"});
+    EXPECT_EQ(FormatDefaults(cl.options),
+              ReplaceLine(kRadianceDefaults, "-n 1 \t\t\t\t# number of rendering processes",
+                          "-n 100\t\t\t\t# number of rendering processes"));
+    EXPECT_EQ(RenderThreads(cl.options), 64);
+    EXPECT_EQ(RenderThreads(Parse({"-n", "3", "-defaults"}).options), 3);
+}
+
 TEST(RtraceDefaults, DefaultsMatchStructInitialisers) {
     EXPECT_EQ(FormatDefaults(RtraceOptions{}), kRadianceDefaults);
 }
