@@ -9,9 +9,7 @@
 #   tests/data/golden/make_illum_i.sh [radiance-dir]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=radiance_setup.sh
+source "$here/radiance_setup.sh"
 "$rad/bin/oconv" "$here/illum_i.rad" > "$tmp/illum_i.oct"
 "$rad/bin/rtrace" -h -w -i -dt 0 -ovs "$tmp/illum_i.oct" < "$here/illum_i.rays" > "$here/illum_i_ovs.txt"

@@ -11,10 +11,8 @@
 #   tests/data/golden/make_irradiance_trace.sh [radiance-dir]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=radiance_setup.sh
+source "$here/radiance_setup.sh"
 "$rad/bin/oconv" "$here/../../../scenes/cornell/cornell.rad" > "$tmp/cornell.oct"
 sed -n '1p;40p' "$here/../../../scenes/cornell/floor.pts" > "$here/cornell_sensors.pts"
 "$rad/bin/rtrace" -h -I -ab 0 -dj 0 -dt 0 -ss 0 -u- -ovtvsL "$tmp/cornell.oct" \

@@ -12,11 +12,8 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
-rad="${1:-$root/../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-export RAYPATH=".:$rad/lib"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=radiance_setup.sh
+source "$here/radiance_setup.sh"
 python3 - > "$here/mixed_lengths.rays" <<'PY'
 import random
 random.seed(3)

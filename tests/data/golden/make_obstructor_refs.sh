@@ -15,10 +15,8 @@
 #   tests/data/golden/make_obstructor_refs.sh [radiance-dir]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-rad="${1:-$here/../../../../shared/reference/radiance-5.4a}"
-[ -x "$rad/bin/rtrace" ] || { echo "no Radiance in $rad" >&2; exit 1; }
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=radiance_setup.sh
+source "$here/radiance_setup.sh"
 scenes="$here/../../../scenes"
 "$rad/bin/oconv" "$scenes/mixed/mixed.rad" > "$tmp/mixed.oct"
 run() { "$rad/bin/rtrace" -h -I -ab 0 -u- -dj 0 -ss 0 "$@" "$tmp/mixed.oct" < "$scenes/mixed/workplane.pts"; }
