@@ -11,8 +11,9 @@
 // cache changes answers at -dt > 0 the way it does in Radiance; at -dt 0 it
 // only saves shadow rays.
 //
-// This header holds the geometry only (cells, and the rays that fill a table
-// at its first use); DirectLight keeps the tables, one set per thread.
+// This header holds the geometry only (cells, and the ray that fills a cell
+// when it is first looked up); DirectLight keeps the tables, one set per
+// thread.
 #pragma once
 
 #include "core/vecmath.h"
