@@ -230,7 +230,8 @@ void WriteHdr(const std::string& path, const Image& image,
         throw Error(Error::Kind::System, FileLoc{path}, "write error");
 }
 
-Image ReadHdr(std::istream& in, const std::string& name, std::vector<std::string>* headerLines) {
+Image ReadHdr(std::istream& in, const std::string& name, std::vector<std::string>* headerLines,
+              long long maxPixels) {
     std::string line;
     if (!std::getline(in, line) || line.rfind("#?", 0) != 0) {
         ThrowUserError(FileLoc{name, 1}, "not a Radiance picture (no '#?RADIANCE' line)");
@@ -261,12 +262,26 @@ Image ReadHdr(std::istream& in, const std::string& name, std::vector<std::string
     if (!std::getline(in, line))
         Corrupt(name, in, "missing resolution string");
     const Orientation o = ParseResolution(line, name, in);
-    Image image(o.xRes, o.yRes);
+    const long long pixels = static_cast<long long>(o.xRes) * o.yRes;
+    if (pixels > maxPixels) {
+        Corrupt(name, in, std::to_string(o.xRes) + " x " + std::to_string(o.yRes) +
+                              " pixels, more than the " + std::to_string(maxPixels) +
+                              " lazyrad reads");
+    }
     const int scans = o.yMajor ? o.yRes : o.xRes;
     const int scanLength = o.yMajor ? o.xRes : o.yRes;
+    // The scanlines are kept as read, and the picture made only once all are
+    // there: memory grows with the data actually decoded, so a short file that
+    // declares a huge size stops at its end instead of first filling gigabytes.
+    std::vector<Rgbe> stored;
     std::vector<Rgbe> scan(static_cast<std::size_t>(scanLength));
     for (int s = 0; s < scans; ++s) {
         ReadScanline(in, name, scan);
+        stored.insert(stored.end(), scan.begin(), scan.end());
+    }
+    Image image(o.xRes, o.yRes);
+    for (int s = 0; s < scans; ++s) {
+        const Rgbe* read = stored.data() + static_cast<std::size_t>(s) * scanLength;
         for (int i = 0; i < scanLength; ++i) {
             // (s, i) → Radiance (x, y-up) → our top-down row.
             int x = o.yMajor ? i : s;
@@ -275,17 +290,18 @@ Image ReadHdr(std::istream& in, const std::string& name, std::vector<std::string
                 x = o.xRes - 1 - x;
             if (o.yDecreasing)
                 yUp = o.yRes - 1 - yUp;
-            image.Set(x, o.yRes - 1 - yUp, DecodeRgbe(scan[static_cast<std::size_t>(i)]));
+            image.Set(x, o.yRes - 1 - yUp, DecodeRgbe(read[i]));
         }
     }
     return image;
 }
 
-Image ReadHdr(const std::string& path, std::vector<std::string>* headerLines) {
+Image ReadHdr(const std::string& path, std::vector<std::string>* headerLines,
+              long long maxPixels) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw Error(Error::Kind::System, FileLoc{path}, "cannot open");
-    return ReadHdr(in, path, headerLines);
+    return ReadHdr(in, path, headerLines, maxPixels);
 }
 
 }  // namespace rt

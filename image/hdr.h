@@ -39,10 +39,16 @@ void WriteHdr(const std::string& path, const Image& image,
 /// new-style RLE or old-style (1,1,1,n) repeats. Pixel values are returned as
 /// stored: EXPOSURE= lines are not divided out. The header lines between the
 /// magic line and the blank line, except FORMAT=, are returned in
-/// `headerLines` when non-null. Errors name `name` (a file or "<stdin>").
+/// `headerLines` when non-null. Errors name `name` (a file or "<stdin>"),
+/// with the byte offset for a damaged body. A picture of more than
+/// `maxPixels` pixels is refused before any pixel is read (Radiance would try
+/// to allocate it; a 30-byte file can declare 2^40 pixels).
+inline constexpr long long kMaxPicturePixels = 1LL << 28;  // 16384 x 16384: 3 GiB as floats
 [[nodiscard]] Image ReadHdr(std::istream& in, const std::string& name,
-                            std::vector<std::string>* headerLines = nullptr);
+                            std::vector<std::string>* headerLines = nullptr,
+                            long long maxPixels = kMaxPicturePixels);
 [[nodiscard]] Image ReadHdr(const std::string& path,
-                            std::vector<std::string>* headerLines = nullptr);
+                            std::vector<std::string>* headerLines = nullptr,
+                            long long maxPixels = kMaxPicturePixels);
 
 }  // namespace rt

@@ -29,6 +29,8 @@ extern "C" int FuzzMeshEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzDatafileEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzBsdfEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzFontEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzPictureEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzViewEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -100,6 +102,14 @@ TEST(FuzzRegression, BsdfCorpusAndRegressions) {
 
 TEST(FuzzRegression, FontCorpusAndRegressions) {
     EXPECT_GT(Replay("font", &FuzzFontEntry), 0u);
+}
+
+TEST(FuzzRegression, PictureCorpusAndRegressions) {
+    EXPECT_GT(Replay("picture", &FuzzPictureEntry), 0u);
+}
+
+TEST(FuzzRegression, ViewCorpusAndRegressions) {
+    EXPECT_GT(Replay("view", &FuzzViewEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a

@@ -158,6 +158,34 @@ TEST(Hdr, ErrorsNameTheInput) {
     }
 }
 
+// A picture's size is checked against the limit before any pixel is read,
+// and a short file that declares a large picture stops at its end: memory
+// follows the data, not the header (the fuzzer's rule).
+TEST(Hdr, RefusesPicturesAboveThePixelLimitBeforeReadingThem) {
+    auto message = [](const std::string& text, long long limit) -> std::string {
+        std::istringstream in(text);
+        try {
+            (void)ReadHdr(in, "big.hdr", nullptr, limit);
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string twoByThree =
+        "#?RADIANCE\n\n-Y 2 +X 3\n" + Bytes({1, 2, 3, 128, 1, 2, 3, 128, 1, 2, 3, 128,
+                                                4, 5, 6, 128, 4, 5, 6, 128, 4, 5, 6, 128});
+    EXPECT_EQ(message(twoByThree, 6), "");
+    EXPECT_EQ(message(twoByThree, 5),
+              "big.hdr: byte 22: bad Radiance picture: 3 x 2 pixels, more than the 5 lazyrad reads");
+    // The default limit: 2^20 x 2^20 in a 30-byte file.
+    EXPECT_EQ(message("#?RADIANCE\n\n-Y 1048576 +X 1048576\n", kMaxPicturePixels),
+              "big.hdr: byte 34: bad Radiance picture: 1048576 x 1048576 pixels, more than the "
+              "268435456 lazyrad reads");
+    EXPECT_NE(message("#?RADIANCE\n\n-Y 16384 +X 16384\n", kMaxPicturePixels)
+                  .find("unexpected end of file"),
+              std::string::npos);
+}
+
 TEST(Hdr, FileRoundTripAndReadImageDispatch) {
     const std::string path = (std::filesystem::temp_directory_path() /
                               ("lazyrad_hdr_" + std::to_string(::getpid()) + ".hdr"))
