@@ -107,6 +107,15 @@ struct SourceTally {
 
 /// One light-source sample's share of the direct term at a shading point.
 struct DirectContribution {
+    // A constructor, not aggregate initialisation, for emplace_back: clang
+    // before 16 has no parenthesised aggregate initialisation (C++20), and
+    // the fuzz build (scripts/fuzz.sh) is clang's.
+    DirectContribution() = default;
+    DirectContribution(int source_, const Vec3& dir_, double distance_, const Rgb& coef_,
+                       const Rgb& value_, double bright_, bool alone_)
+        : source(source_), dir(dir_), distance(distance_), coef(coef_), value(value_),
+          bright(bright_), alone(alone_) {}
+
     int source = -1;
     Vec3 dir;
     double distance = 0;  // to the sample point on the source
