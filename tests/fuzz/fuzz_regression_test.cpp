@@ -31,6 +31,7 @@ extern "C" int FuzzBsdfEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzFontEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzPictureEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzViewEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzOptionsEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -110,6 +111,10 @@ TEST(FuzzRegression, PictureCorpusAndRegressions) {
 
 TEST(FuzzRegression, ViewCorpusAndRegressions) {
     EXPECT_GT(Replay("view", &FuzzViewEntry), 0u);
+}
+
+TEST(FuzzRegression, OptionsCorpusAndRegressions) {
+    EXPECT_GT(Replay("options", &FuzzOptionsEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a
