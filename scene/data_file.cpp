@@ -119,7 +119,9 @@ DataArray::DataArray(std::vector<DataAxis> axes, std::vector<float> values)
     std::uint64_t total = 1;
     bool valid = !axes_.empty() && axes_.size() <= kMaxDataDimensions;
     for (const DataAxis& a : axes_) {
-        valid = valid && a.count >= 2 &&
+        // One point only on a regular axis: a picture one pixel high or wide
+        // (ParseDataFile refuses such axes in data files, as Radiance does).
+        valid = valid && (a.count >= 2 || (a.count == 1 && a.points.empty())) &&
                 (a.points.empty() || a.points.size() == static_cast<std::size_t>(a.count)) &&
                 total <= kMaxValues / static_cast<std::uint64_t>(a.count);
         if (valid) total *= static_cast<std::uint64_t>(a.count);
@@ -139,6 +141,15 @@ double DataArray::Value(std::span<const double> point) const {
 double DataArray::Value(std::span<const double> point, int axis, std::size_t offset) const {
     const DataAxis& a = axes_[static_cast<std::size_t>(axis)];
     const double pt = point[static_cast<std::size_t>(axis)];
+    if (a.count == 1) {
+        // Radiance's arithmetic on a one-pixel axis: x = (pt - org)/siz·0 = 0,
+        // i = 0 clamped to n - 2 = -1, so the slab at index -1 (outside the
+        // array) gets weight 0 and slab 0 weight 1: the value is constant
+        // along the axis, with no fall-off. A coordinate that is not finite
+        // makes x NaN there, and the value NaN.
+        if (std::isnan((pt - a.origin) / a.span * 0.0)) return std::numeric_limits<double>::quiet_NaN();
+        return axis + 1 < dimensions() ? Value(point, axis + 1, offset) : values_[offset];
+    }
     double x;
     int i;
     if (a.points.empty()) {
@@ -272,21 +283,13 @@ std::shared_ptr<const DataArray> DataFileCache::Data(const std::string& name,
     return array;
 }
 
-std::array<std::shared_ptr<const DataArray>, 3> DataFileCache::Picture(
-    const std::string& name, const std::string& requestedBy) {
-    for (const auto& [key, channels] : pictures_) {
-        if (key == name) return channels;
-    }
-    const std::optional<cal::SourceText> file = cal::FindFunctionFile(name, path_);
-    const std::string prefix = requestedBy.empty() ? "" : requestedBy + ": ";
-    if (!file) {
-        throw Error(Error::Kind::System, prefix + "cannot find picture file \"" + name + "\"");
-    }
+std::array<std::shared_ptr<const DataArray>, 3> PictureFileAsData(
+    std::istream& in, const std::string& path, const std::string& name,
+    const std::string& prefix, long long maxPixels) {
     std::vector<std::string> header;
     Image image;
     try {
-        std::istringstream in(file->text);
-        image = ReadHdr(in, file->name, &header);
+        image = ReadHdr(in, path, &header, maxPixels);
     } catch (const Error& e) {
         ThrowUserError(prefix + "bad picture file \"" + name + "\" (" + e.what() + ")");
     }
@@ -299,7 +302,21 @@ std::array<std::shared_ptr<const DataArray>, 3> DataFileCache::Picture(
         !std::isfinite(aspect)) {
         ThrowUserError(prefix + "bad picture file \"" + name + "\" (pixel aspect ratio or size)");
     }
-    auto channels = PictureAsData(image, aspect);
+    return PictureAsData(image, aspect);
+}
+
+std::array<std::shared_ptr<const DataArray>, 3> DataFileCache::Picture(
+    const std::string& name, const std::string& requestedBy) {
+    for (const auto& [key, channels] : pictures_) {
+        if (key == name) return channels;
+    }
+    const std::optional<cal::SourceText> file = cal::FindFunctionFile(name, path_);
+    const std::string prefix = requestedBy.empty() ? "" : requestedBy + ": ";
+    if (!file) {
+        throw Error(Error::Kind::System, prefix + "cannot find picture file \"" + name + "\"");
+    }
+    std::istringstream in(file->text);
+    auto channels = PictureFileAsData(in, file->name, name, prefix, kMaxPicturePixels);
     pictures_.emplace_back(name, channels);
     return channels;
 }

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <span>
 #include <string>
@@ -37,7 +38,7 @@ inline constexpr int kMaxDataDimensions = 5;
 struct DataAxis {
     float origin = 0;         // first coordinate (regular: begin; irregular: p[0])
     float span = 0;           // last coordinate minus the first; negative when descending
-    int count = 0;            // number of grid points, >= 2
+    int count = 0;            // number of grid points, >= 2 (1: a picture one pixel high or wide)
     std::vector<float> points;  // irregular axes: every coordinate; empty when regular
 };
 
@@ -78,6 +79,15 @@ DataArray ParseDataFile(std::string_view text, const std::string& path, const st
 /// ends. `pixelAspect` is the product of the header's PIXASPECT values.
 std::array<std::shared_ptr<const DataArray>, 3> PictureAsData(const Image& image,
                                                               double pixelAspect);
+
+/// A picture file's bytes as colorpict reads them: ReadHdr (at most
+/// `maxPixels` pixels), the product of the header's PIXASPECT= values, then
+/// PictureAsData. Throws rt::Error (User) `<prefix>bad picture file "name"
+/// (<the reader's message>)`, and `(pixel aspect ratio or size)` for an
+/// aspect that is not a positive finite number.
+std::array<std::shared_ptr<const DataArray>, 3> PictureFileAsData(
+    std::istream& in, const std::string& path, const std::string& name,
+    const std::string& prefix, long long maxPixels);
 
 /// Data files and pictures of one scene, each loaded once (keyed by the name
 /// as written, as Radiance's table is) and found on RAYPATH. Loading is not

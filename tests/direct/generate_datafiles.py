@@ -172,7 +172,13 @@ def main():
                                  [(c + 1, 1, 1) for c in range(4)]], header="PIXASPECT=0.5")
     rays_at("uv.rays", [(0, 0), (2, 1), (1, 0.5), (0.6666667, 0), (2, 0), (3, 0), (-1, -1),
                         (1.3, 0.7), (0.2, 1.6), (0.5, 2.5), (-0.3, 0.4)])
-    for name, pic in (("landscape", "p.hdr"), ("portrait", "tall.hdr"), ("aspect", "aspect.hdr")):
+    # Pictures one pixel high, one pixel wide and a single pixel: Radiance's
+    # datavalue() gives the value of the one row (column) all along that axis.
+    picture("row.hdr", 4, 1, [[(c + 1, 2, 0.5 * c + 1) for c in range(4)]])
+    picture("column.hdr", 1, 3, [[(3 - r, r + 1, 2)] for r in range(3)])
+    picture("pixel.hdr", 1, 1, [[(3, 2, 1)]])
+    for name, pic in (("landscape", "p.hdr"), ("portrait", "tall.hdr"), ("aspect", "aspect.hdr"),
+                      ("row", "row.hdr"), ("column", "column.hdr"), ("pixel", "pixel.hdr")):
         light_case("colorpict", name,
                    f"void colorpict pat\nN# red green blue {pic} . Px Py\n0\n0", "uv.rays")
     light_case("colorpict", "grey_xf",

@@ -173,6 +173,27 @@ TEST(DataFile, PictureIsBilinearBetweenPixelCentres) {
     ExpectPrinted(At(*rgb[1], {0, 3}), 0.2924107);
 }
 
+// A picture one pixel high: along v every coordinate, far ones included,
+// reads the one row (Radiance's weights 0 and 1, no fall-off); along u it is
+// interpolated as usual; a NaN coordinate on the one-pixel axis gives NaN.
+// One pixel in all: that pixel everywhere. (Matched to real Radiance in
+// tests/data/datafiles, "colorpict row", "column" and "pixel".)
+TEST(DataFile, PicturesOnePixelHighOrWideAreConstantAlongThatAxis) {
+    Image row(3, 1);
+    for (int x = 0; x < 3; ++x) row.Set(x, 0, DecodeRgbe(EncodeRgbe(Rgb(x + 1, 1, 1))));
+    const auto r = PictureAsData(row, 1.0);  // u in [0, 3], v in [0, 1]
+    ASSERT_EQ(r[0]->axes()[0].count, 1);
+    for (double v : {0.0, 0.5, 1.0, -7.0, 1e9}) {
+        ExpectPrinted(At(*r[0], {v, 0}), 1.003906);
+        ExpectPrinted(At(*r[0], {v, 1.5}), 2.007812);  // halfway between pixels 1 and 2
+    }
+    EXPECT_TRUE(std::isnan(At(*r[0], {std::numeric_limits<double>::quiet_NaN(), 1.0})));
+    Image pixel(1, 1);
+    pixel.Set(0, 0, DecodeRgbe(EncodeRgbe(Rgb(3, 2, 1))));
+    const auto p = PictureAsData(pixel, 1.0);
+    for (double u : {0.0, 0.7, -3.0, 50.0}) ExpectPrinted(At(*p[1], {0.25, u}), 2.007812);  // green 2 beside red 3: mantissa 128
+}
+
 TEST(DataFileCache, LoadsEachFileOnceAndSearchesThePath) {
     const std::string dir = ::testing::TempDir() + "datacache_" + std::to_string(getpid());
     ASSERT_EQ(std::system(("mkdir -p " + dir).c_str()), 0);
