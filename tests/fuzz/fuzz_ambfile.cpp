@@ -74,7 +74,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
         rt::SharedAmbientFile file(TempPath(), rt::AmbientHeaderParams{}, rt::WarningSink{});
         const std::vector<rt::AmbientRecord> records = file.LoadAll();
         static_cast<void>(records);
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Not an ambient file: expected.
     }
     std::remove(TempPath().c_str());

@@ -36,7 +36,8 @@ void EvaluateAll(const rt::cal::Program& program, std::size_t firstSlot) {
         try {
             const rt::cal::Variable v{static_cast<std::int32_t>(s)};
             static_cast<void>(program.Evaluate(v, context));
-        } catch (const rt::Error&) {
+        } catch (const rt::Error& e) {
+            rt::fuzz::ExpectRefusal(e);
             // A fatal evaluation error: expected for arbitrary input.
         }
     }
@@ -52,7 +53,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
     const std::size_t firstSlot = program.code().slots.size();
     try {
         program.LoadText(text, "fuzz.cal", "fuzz");
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Rejected input: expected.
     }
     EvaluateAll(program, firstSlot);
@@ -64,7 +66,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
         context.SetCallLimit(20000);
         context.NextEvaluation();
         static_cast<void>(program.Evaluate(e, context));
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
     }
     return 0;
 }

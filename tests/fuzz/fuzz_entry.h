@@ -7,9 +7,27 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/error.h"
 
 #ifndef RT_FUZZ_ENTRY
 #define RT_FUZZ_ENTRY LLVMFuzzerTestOneInput
 #endif
 
 extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size);
+
+namespace rt::fuzz {
+
+/// For a target's `catch (const rt::Error& e)`: a User or System error is the
+/// parser refusing the input, as it should; an Internal one is lazyrad's own
+/// invariant broken by input that got past the parser, so a finding.
+inline void ExpectRefusal(const rt::Error& e) {
+    if (e.kind() == rt::Error::Kind::Internal) {
+        std::fprintf(stderr, "fuzz: internal error: %s\n", e.what());
+        std::abort();
+    }
+}
+
+}  // namespace rt::fuzz

@@ -27,7 +27,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
             rt::CheckOctreeObjects(octree, octree.objects, "fuzz.oct");
             static_cast<void>(rt::BuildScene(octree.objects, warn, options));
         }
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Rejected input: expected.
     }
     try {
@@ -36,7 +37,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
         const rt::OctreeFile octree = rt::ReadOctree(
             again, "fuzz.oct", false, [&assembler](rt::SceneObject& o) { assembler.Add(o); });
         if (octree.frozen()) static_cast<void>(assembler.Finish());
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
     }
     return 0;
 }

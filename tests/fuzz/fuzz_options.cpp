@@ -29,7 +29,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
             rt::ParseCommandLine(args, [](const std::string&) {}, rt::SceneArgument::CheckedLater);
         static_cast<void>(rt::FormatDefaults(cl.options));
         static_cast<void>(rt::InfoText(cl));
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Refused command line: expected.
     }
     return 0;

@@ -39,7 +39,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
         }
         std::fprintf(stderr, "fuzz_rays: more records than input bytes (format %c)\n", format);
         std::abort();
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Rejected input: expected.
     }
     return 0;

@@ -52,7 +52,8 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
             }
         }
         static_cast<void>(rt::ViewAspect(prepared));
-    } catch (const rt::Error&) {
+    } catch (const rt::Error& e) {
+        rt::fuzz::ExpectRefusal(e);
         // Refused view: expected.
     }
     return 0;
