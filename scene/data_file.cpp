@@ -147,7 +147,9 @@ double DataArray::Value(std::span<const double> point, int axis, std::size_t off
         // array) gets weight 0 and slab 0 weight 1: the value is constant
         // along the axis, with no fall-off. A coordinate that is not finite
         // makes x NaN there, and the value NaN.
-        if (std::isnan((pt - a.origin) / a.span * 0.0)) return std::numeric_limits<double>::quiet_NaN();
+        if (std::isnan((pt - a.origin) / a.span * 0.0)) {
+            return std::numeric_limits<double>::quiet_NaN();
+        }
         return axis + 1 < dimensions() ? Value(point, axis + 1, offset) : values_[offset];
     }
     double x;

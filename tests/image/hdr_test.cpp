@@ -176,7 +176,8 @@ TEST(Hdr, RefusesPicturesAboveThePixelLimitBeforeReadingThem) {
                                                 4, 5, 6, 128, 4, 5, 6, 128, 4, 5, 6, 128});
     EXPECT_EQ(message(twoByThree, 6), "");
     EXPECT_EQ(message(twoByThree, 5),
-              "big.hdr: byte 22: bad Radiance picture: 3 x 2 pixels, more than the 5 lazyrad reads");
+              "big.hdr: byte 22: bad Radiance picture: 3 x 2 pixels, more than the 5 lazyrad "
+              "reads");
     // The default limit: 2^20 x 2^20 in a 30-byte file.
     EXPECT_EQ(message("#?RADIANCE\n\n-Y 1048576 +X 1048576\n", kMaxPicturePixels),
               "big.hdr: byte 34: bad Radiance picture: 1048576 x 1048576 pixels, more than the "

@@ -191,7 +191,8 @@ TEST(DataFile, PicturesOnePixelHighOrWideAreConstantAlongThatAxis) {
     Image pixel(1, 1);
     pixel.Set(0, 0, DecodeRgbe(EncodeRgbe(Rgb(3, 2, 1))));
     const auto p = PictureAsData(pixel, 1.0);
-    for (double u : {0.0, 0.7, -3.0, 50.0}) ExpectPrinted(At(*p[1], {0.25, u}), 2.007812);  // green 2 beside red 3: mantissa 128
+    // Green 2 beside red 3 in one RGBE pixel: mantissa 128 at red's exponent.
+    for (double u : {0.0, 0.7, -3.0, 50.0}) ExpectPrinted(At(*p[1], {0.25, u}), 2.007812);
 }
 
 TEST(DataFileCache, LoadsEachFileOnceAndSearchesThePath) {
