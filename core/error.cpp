@@ -14,6 +14,18 @@ Error::Error(Kind kind, const std::string& message) : std::runtime_error(message
 Error::Error(Kind kind, const FileLoc& loc, const std::string& message)
     : std::runtime_error(loc.ToString() + ": " + message), kind_(kind) {}
 
+Error Error::InternalByInput(const FileLoc& loc, const std::string& message) {
+    Error e(Kind::Internal, loc, message);
+    e.byInput_ = true;
+    return e;
+}
+
+Error Error::InternalByInput(const std::string& message) {
+    Error e(Kind::Internal, message);
+    e.byInput_ = true;
+    return e;
+}
+
 int Error::ExitCode() const {
     switch (kind_) {
         case Kind::User: return 1;

@@ -27,12 +27,23 @@ public:
     Error(Kind kind, const std::string& message);
     Error(Kind kind, const FileLoc& loc, const std::string& message);
 
+    /// Radiance reports a few kinds of bad input as INTERNAL errors (exit 3;
+    /// m_mist.c's "too many sources in list"). lazyrad keeps the word and the
+    /// status, and marks them as the input's, so that the fuzz targets can
+    /// tell them from an invariant of lazyrad's own broken by input.
+    static Error InternalByInput(const FileLoc& loc, const std::string& message);
+    static Error InternalByInput(const std::string& message);
+
     Kind kind() const { return kind_; }
     /// Radiance's exit status for this kind of error.
     int ExitCode() const;
+    /// True for user and system errors and for InternalByInput: the input (or
+    /// the system) was refused, rather than lazyrad failing.
+    bool RefusesInput() const { return kind_ != Kind::Internal || byInput_; }
 
 private:
     Kind kind_;
+    bool byInput_ = false;
 };
 
 /// Shorthands for the common case of a user error at a place in an input.

@@ -653,8 +653,8 @@ private:
                 ThrowUserError(object.loc, "bad arguments for " + Describe(object));
             }
             if (object.sargs.size() > kMaxMistSources) {
-                throw Error(Error::Kind::Internal, object.loc,
-                            "too many sources in list for " + Describe(object));
+                throw Error::InternalByInput(object.loc,
+                                             "too many sources in list for " + Describe(object));
             }
         } else if (spec->function != MaterialFunction::None) {
             const std::size_t strings = spec->function == MaterialFunction::Brdf   ? 2

@@ -552,7 +552,7 @@ void ShadeMist(const RayTree& tree, ThreadState& ts, TracedRay& ray, const Mater
         for (const int s : own) {
             if (listed(md, s)) continue;
             if (md.scatterCount >= kMaxScatterSources) {
-                throw Error(Error::Kind::Internal, "scattering source list overflow");
+                throw Error::InternalByInput("scattering source list overflow");
             }
             md.scatterSources[static_cast<std::size_t>(md.scatterCount++)] = s;
         }

@@ -21,10 +21,12 @@ extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size);
 namespace rt::fuzz {
 
 /// For a target's `catch (const rt::Error& e)`: a User or System error is the
-/// parser refusing the input, as it should; an Internal one is lazyrad's own
-/// invariant broken by input that got past the parser, so a finding.
+/// parser refusing the input, as it should, and so is one of the bad inputs
+/// Radiance itself reports as internal (Error::InternalByInput); any other
+/// Internal one is lazyrad's own invariant broken by input that got past the
+/// parser, so a finding.
 inline void ExpectRefusal(const rt::Error& e) {
-    if (e.kind() == rt::Error::Kind::Internal) {
+    if (!e.RefusesInput()) {
         std::fprintf(stderr, "fuzz: internal error: %s\n", e.what());
         std::abort();
     }
