@@ -244,6 +244,22 @@ bool IsViewLine(std::string_view line) {
     return false;
 }
 
+int ApplyViewHeader(std::istream& in, View& view) {
+    // Radiance's getheader(): the header ends at the first empty line, which
+    // also keeps us out of a picture's binary data.
+    int found = 0;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        if (line.empty())
+            break;
+        if (IsViewLine(line) && ScanViewString(view, line) > 0)
+            ++found;
+    }
+    return found;
+}
+
 void ReadViewFile(const std::string& path, View& view) {
     std::ifstream file;
     std::istream* in = &std::cin;
@@ -254,19 +270,7 @@ void ReadViewFile(const std::string& path, View& view) {
             throw Error(Error::Kind::System, FileLoc{path}, "cannot open view file");
         in = &file;
     }
-    // Radiance's getheader(): the header ends at the first empty line, which
-    // also keeps us out of a picture's binary data.
-    int found = 0;
-    std::string line;
-    while (std::getline(*in, line)) {
-        if (!line.empty() && line.back() == '\r')
-            line.pop_back();
-        if (line.empty())
-            break;
-        if (IsViewLine(line) && ScanViewString(view, line) > 0)
-            ++found;
-    }
-    if (found == 0)
+    if (ApplyViewHeader(*in, view) == 0)
         ThrowUserError(FileLoc{name}, "no view in file");
 }
 

@@ -11,6 +11,7 @@
 //   if (auto ray = rt::ViewRay(pv, 0.5, 0.5)) trace(ray->origin, ray->direction);
 #pragma once
 
+#include <iosfwd>
 #include <optional>
 #include <span>
 #include <string>
@@ -83,6 +84,11 @@ int ScanViewString(View& view, std::string_view line);
 /// Radiance's isview(): true when the line's first word, without directories,
 /// starts with VIEW=, rpict, rview, rvu, rpiece, pinterp or vwrays.
 [[nodiscard]] bool IsViewLine(std::string_view line);
+
+/// The loop of ReadViewFile: applies every view line (IsViewLine) of the
+/// header read from `in`, up to its first empty line, and returns how many
+/// applied at least one option.
+int ApplyViewHeader(std::istream& in, View& view);
 
 /// Radiance's viewfile(): applies every view line of the file's header (text up
 /// to the first blank line; a .vf file or a picture). Throws rt::Error naming the

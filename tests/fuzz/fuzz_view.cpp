@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 //
 // Fuzz target: arbitrary bytes as the header of a view file (`-vf`, read by
-// rvimage and vwrays): each line through ScanViewString, as ReadViewFile
-// applies them, then SetupView, then ViewRay across the image, its corners
+// rvimage and vwrays) through ApplyViewHeader, ReadViewFile's loop, then
+// SetupView, then ViewRay across the image, its corners
 // and beyond it. rt::Error is the expected way to refuse a view; a view that
 // SetupView accepts must give, for every pixel, either no ray (outside a
 // fisheye) or a finite origin, a unit direction and a finite, non-negative
@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
-#include <string_view>
 
 #include "core/error.h"
 #include "tests/fuzz/fuzz_entry.h"
@@ -26,14 +26,9 @@ bool Finite(const rt::Vec3& v) {
 }  // namespace
 
 extern "C" int RT_FUZZ_ENTRY(const std::uint8_t* data, std::size_t size) {
-    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     rt::View view;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        static_cast<void>(rt::ScanViewString(view, text.substr(start, end - start)));
-        start = end + 1;
-    }
+    static_cast<void>(rt::ApplyViewHeader(in, view));
     try {
         const rt::PreparedView prepared = rt::SetupView(view);
         constexpr double kCoords[] = {0.0, 0.5, 1.0, 0.013, 0.987, -0.5, 1.5};
