@@ -63,9 +63,6 @@ std::string FormatTime(const std::tm& t) {
 OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn) {
     const std::string& vs = options.outputSpec;
     if (vs.empty()) ThrowUserError("empty output specification");
-    if (options.outputFormat == 'c' && (vs.size() != 1 || std::strchr("vrx", vs[0]) == nullptr))
-        ThrowUserError("color format only with -ov, -or, -ox");
-
     const bool irradiance = options.shading.irradiance != IrradianceMode::Off;
     const AmbientOptions& amb = options.ambient;
     const bool accuracyWarning =
@@ -109,6 +106,10 @@ OutputSpec ParseOutputSpec(const RtraceOptions& options, const WarningSink& warn
         if (irradiance && std::strchr("rRxX", c))
             warn("-orRxX options incompatible with -I+ and -i+");
     }
+    // Last, as Radiance checks it in rtrace() after setrtoutput() has
+    // refused unknown letters and given its warnings.
+    if (options.outputFormat == 'c' && (vs.size() != 1 || std::strchr("vrx", vs[0]) == nullptr))
+        ThrowUserError("color format only with -ov, -or, -ox");
     return spec;
 }
 

@@ -244,6 +244,21 @@ TEST(RtraceRun, CommandLineErrors) {
     EXPECT_EQ(r.err, "rtrace: fatal - empty output specification\n");
     r = RunWith({"-fac", "-ovo", "s.rad"}, "", &s);
     EXPECT_EQ(r.err, "rtrace: fatal - color format only with -ov, -or, -ox\n");
+    // Radiance refuses the colour format last, after the letters' own
+    // errors and warnings (real rtrace 5.4a's stderr for each command line).
+    r = RunWith({"-fac", "-oq", "s.rad"}, "", &s);
+    EXPECT_EQ(r.err, "rtrace: fatal - unrecognized output option 'q'\n");
+    r = RunWith({"-fac", "-I", "-oL", "s.rad"}, "", &s);
+    EXPECT_EQ(r.err, "rtrace: fatal - -I+ and -i+ options require some value output\n");
+    r = RunWith({"-fac", "-oVW", "s.rad"}, "", &s);
+    EXPECT_EQ(r.err,
+              "rtrace: warning - -oVW options require trace mode\n"
+              "rtrace: warning - -oVW options require trace mode\n"
+              "rtrace: fatal - color format only with -ov, -or, -ox\n");
+    r = RunWith({"-fac", "-ab", "1", "-ovtV", "s.rad"}, "", &s);
+    EXPECT_EQ(r.err,
+              "rtrace: warning - -otV accuracy depends on -aa 0 -as 0\n"
+              "rtrace: fatal - color format only with -ov, -or, -ox\n");
     EXPECT_EQ(s.built, 0);  // all found before the scene is loaded
     r = RunWith({"@/no/such/file", "s.rad"}, "", &s);
     EXPECT_EQ(r.status, 2);
