@@ -279,6 +279,11 @@ def main():
     write("bad_picture.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\nshort")
     light_case("error", "bad_picture",
                "void colorpict pat\nN# red green blue bad_picture.hdr . Px Py\n0\n0", "x.rays")
+    # 57 bytes declaring 2^40 pixels: both programs refuse it (lazyrad before
+    # reading any pixel, tests/image/hdr_test.cpp), exit status 1.
+    write("huge_picture.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1048576 +X 1048576\n")
+    light_case("error", "huge_picture",
+               "void colorpict pat\nN# red green blue huge_picture.hdr . Px Py\n0\n0", "x.rays")
     light_case("error", "few_strings", "void brightdata pat\nN# noop d2.dat .\n0\n0", "x.rays")
     light_case("error", "few_coordinates", "void brightdata pat\nN# noop d2.dat . Px\n0\n0", "x.rays")
     light_case("error", "dimension_mismatch",
