@@ -8,9 +8,11 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "image/hdr.h"
 #include "image/image.h"
 
 namespace rt {
@@ -26,8 +28,17 @@ void WriteExr(const std::string& path, const Image& image, const ImageMetadata& 
 /// Reads any scanline or tiled OpenEXR file; channels are converted to float.
 /// R, G, B become the colour (a lone Y channel is copied to all three); every other
 /// channel becomes a layer. String attributes are returned in `metadata` when it is
-/// non-null, in the file's (alphabetical) order. Throws rt::Error naming `path`.
-[[nodiscard]] Image ReadExr(const std::string& path, ImageMetadata* metadata = nullptr);
+/// non-null, in the file's (alphabetical) order. Throws rt::Error naming `path`,
+/// also, before reading any pixel, for a picture of more than `maxPixels` pixels
+/// or more than 3·maxPixels values over all its channels.
+[[nodiscard]] Image ReadExr(const std::string& path, ImageMetadata* metadata = nullptr,
+                            long long maxPixels = kMaxPicturePixels);
+
+/// ReadExr on a file's bytes held in memory, `name` standing for the file in
+/// messages (the fuzz target's way in).
+[[nodiscard]] Image ReadExrBytes(std::string_view bytes, const std::string& name,
+                                 ImageMetadata* metadata = nullptr,
+                                 long long maxPixels = kMaxPicturePixels);
 
 /// True when the file starts with the OpenEXR magic number (76 2f 31 01).
 [[nodiscard]] bool IsExrFile(const std::string& path);

@@ -32,6 +32,7 @@ extern "C" int FuzzFontEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzPictureEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzViewEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzOptionsEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzExrEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -115,6 +116,10 @@ TEST(FuzzRegression, ViewCorpusAndRegressions) {
 
 TEST(FuzzRegression, OptionsCorpusAndRegressions) {
     EXPECT_GT(Replay("options", &FuzzOptionsEntry), 0u);
+}
+
+TEST(FuzzRegression, ExrCorpusAndRegressions) {
+    EXPECT_GT(Replay("exr", &FuzzExrEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a
