@@ -31,8 +31,6 @@ bool EndsWith(const std::string& s, std::string_view suffix) {
            });
 }
 
-enum class OutputKind { Exr, Hdr, Png };
-
 std::optional<OutputKind> KindOf(const std::string& path) {
     if (EndsWith(path, ".exr")) return OutputKind::Exr;
     if (EndsWith(path, ".hdr") || EndsWith(path, ".pic")) return OutputKind::Hdr;
@@ -197,6 +195,23 @@ RvimageCommandLine ParseRvimageCommandLine(std::span<const std::string> args,
     return cl;
 }
 
+PicturePlan PlanPicture(const PictureSettings& s) {
+    const std::optional<OutputKind> kind = KindOf(s.outputPath);
+    if (!kind) ThrowUserError("output '" + s.outputPath + "' must end in .exr, .hdr, .pic or .png");
+    PicturePlan plan{[&s] {
+                         try {
+                             return SetupView(s.view);
+                         } catch (const Error& e) {
+                             ThrowUserError(std::string("bad view: ") + e.what());
+                         }
+                     }(),
+                     s.xResolution, s.yResolution, *kind};
+    double aspect = s.pixelAspect;
+    NormalizeAspect(ViewAspect(plan.view), aspect, plan.width, plan.height);
+    if (plan.width <= 0 || plan.height <= 0) ThrowUserError("picture resolution too small");
+    return plan;
+}
+
 int RunRvimage(std::span<const std::string> args, std::ostream& out, std::ostream& err,
                const RunEnvironment& env, bool errIsTerminal) {
     ProgramShell shell(kProgram, err);
@@ -211,18 +226,10 @@ int RunRvimage(std::span<const std::string> args, std::ostream& out, std::ostrea
         }
         if (!shell.OpenErrorFile(opt.errorFile, env.pid, cl.args)) return 2;
         const PictureSettings& s = cl.settings;
-        const PreparedView view = [&s] {
-            try {
-                return SetupView(s.view);
-            } catch (const Error& e) {
-                ThrowUserError(std::string("bad view: ") + e.what());
-            }
-        }();
-        int width = s.xResolution, height = s.yResolution;
-        double aspect = s.pixelAspect;
-        NormalizeAspect(ViewAspect(view), aspect, width, height);
-        if (width <= 0 || height <= 0) ThrowUserError("picture resolution too small");
-        const OutputKind kind = *KindOf(s.outputPath);
+        const PicturePlan plan = PlanPicture(s);
+        const PreparedView& view = plan.view;
+        const int width = plan.width, height = plan.height;
+        const OutputKind kind = plan.kind;
         if (kind == OutputKind::Hdr && (s.indirectLayer || s.outcomeLayer || s.recordsLayer))
             warn("layers are written only to OpenEXR (.exr) or, for records, PNG");
 

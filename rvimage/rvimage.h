@@ -18,6 +18,7 @@
 #include "rtrace/command_line.h"
 #include "rtrace/ray_evaluator.h"
 #include "rvimage/picture.h"
+#include "view/view.h"
 
 namespace rt {
 
@@ -28,6 +29,19 @@ struct RvimageCommandLine {
     /// its directory); the -e banner prints these.
     std::vector<std::string> args;
 };
+
+enum class OutputKind { Exr, Hdr, Png };
+
+/// What rvimage renders for a parsed command line: the view set up, the
+/// picture's resolution fitted to the view's aspect (-x, -y, -pa, as Radiance's
+/// rpict fits them) and the output's kind by its name. Throws rt::Error (User)
+/// for a bad view, a picture too small or an unknown output name.
+struct PicturePlan {
+    PreparedView view;
+    int width = 0, height = 0;
+    OutputKind kind = OutputKind::Exr;
+};
+[[nodiscard]] PicturePlan PlanPicture(const PictureSettings& settings);
 
 /// Pulls the view options, -x -y -pa -pj -o -rscale and -layers out of `args`
 /// (argv[0] first; @file and $VAR words are expanded first) and hands the

@@ -4,13 +4,13 @@
 # build-fuzz/artifacts/TARGET/; replay one with build-fuzz/bin/fuzz_TARGET FILE and,
 # once fixed, copy it to tests/fuzz/regressions/TARGET/.
 #
-#   scripts/fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr SECONDS
+#   scripts/fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr|rvimage SECONDS
 #
 # Environment: BUILD (default build-fuzz), RT_FUZZ_MERGE=0 skips the final merge,
 # extra libFuzzer flags in FUZZ_FLAGS.
 set -euo pipefail
-target=${1:?usage: fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr SECONDS}
-seconds=${2:?usage: fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr SECONDS}
+target=${1:?usage: fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr|rvimage SECONDS}
+seconds=${2:?usage: fuzz.sh scene|rays|ambfile|cal|octree|mesh|datafile|bsdf|font|picture|view|options|exr|rvimage SECONDS}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD:-$root/build-fuzz}
 case $target in
@@ -27,7 +27,8 @@ case $target in
   view) max_len=1024; keep_len=512; extra=() ;;
   options) max_len=1024; keep_len=512; extra=() ;;
   exr) max_len=8192; keep_len=2048; extra=() ;;
-  *) echo "fuzz.sh: unknown target $target (scene, rays, ambfile, cal, octree, mesh, datafile, bsdf, font, picture, view, options, exr)" >&2; exit 2 ;;
+  rvimage) max_len=1024; keep_len=512; extra=() ;;
+  *) echo "fuzz.sh: unknown target $target (scene, rays, ambfile, cal, octree, mesh, datafile, bsdf, font, picture, view, options, exr, rvimage)" >&2; exit 2 ;;
 esac
 
 if [[ ! -f $build/CMakeCache.txt ]]; then

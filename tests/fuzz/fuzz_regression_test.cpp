@@ -33,6 +33,7 @@ extern "C" int FuzzPictureEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzViewEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzOptionsEntry(const std::uint8_t* data, std::size_t size);
 extern "C" int FuzzExrEntry(const std::uint8_t* data, std::size_t size);
+extern "C" int FuzzRvimageEntry(const std::uint8_t* data, std::size_t size);
 
 namespace {
 
@@ -120,6 +121,10 @@ TEST(FuzzRegression, OptionsCorpusAndRegressions) {
 
 TEST(FuzzRegression, ExrCorpusAndRegressions) {
     EXPECT_GT(Replay("exr", &FuzzExrEntry), 0u);
+}
+
+TEST(FuzzRegression, RvimageCorpusAndRegressions) {
+    EXPECT_GT(Replay("rvimage", &FuzzRvimageEntry), 0u);
 }
 
 // The scene fuzzer relies on SceneLoadOptions::runCommands = false never running a
