@@ -10,10 +10,10 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <exception>
-#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <mutex>
@@ -191,7 +191,9 @@ private:
             const std::string_view type = Name(maxLength);
             const std::int32_t declared = I32(pos_);
             pos_ += 4;
-            if (declared < 0) Fail(at, "attribute \"" + std::string(attribute) + "\" of negative size");
+            if (declared < 0) {
+                Fail(at, "attribute \"" + std::string(attribute) + "\" of negative size");
+            }
             const std::size_t size = static_cast<std::size_t>(declared);
             const std::size_t value = pos_;
             const std::size_t taken = ValueBytes(type, size, at, attribute);
@@ -223,8 +225,8 @@ private:
         if (chunkCount > 0) return static_cast<unsigned long long>(chunkCount);
         if (width <= 0 || height <= 0) return 0;  // OpenEXR refuses it
         if (tiled) {
-            return tileX == 0 || tileY == 0 ? 0
-                                            : Tiles(width, height, tileX, tileY, levelMode, rounding);
+            if (tileX == 0 || tileY == 0) return 0;  // OpenEXR refuses it
+            return Tiles(width, height, tileX, tileY, levelMode, rounding);
         }
         // Scanlines a chunk holds, by compression method (ImfCompression.h).
         constexpr int kLines[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};

@@ -267,7 +267,9 @@ TEST(Exr, ReadsEveryCompressionTilingAndLevelModeOpenExrWrites) {
         for (int i = 0; i < 2; ++i) {
             headers[i].setName("part" + std::to_string(i));
             headers[i].setType(Imf::SCANLINEIMAGE);
-            for (const char* c : {"R", "G", "B"}) headers[i].channels().insert(c, Imf::Channel(Imf::FLOAT));
+            for (const char* c : {"R", "G", "B"}) {
+                headers[i].channels().insert(c, Imf::Channel(Imf::FLOAT));
+            }
         }
         Imf::MultiPartOutputFile out(path.c_str(), headers.data(), 2);
         for (int i = 0; i < 2; ++i) {
@@ -324,8 +326,9 @@ TEST(Exr, RefusesHeadersThatDeclareMoreThanTheFileHolds) {
     const std::int32_t box[4] = {0, 0, 3, 4095};
     std::memcpy(&s[window], box, sizeof box);
     const std::string message = ExrMessage(s, kMaxPicturePixels);
-    EXPECT_NE(message.find(": bad OpenEXR file: 256 chunks, whose offsets alone take more than the "),
-              std::string::npos)
+    EXPECT_NE(
+        message.find(": bad OpenEXR file: 256 chunks, whose offsets alone take more than the "),
+        std::string::npos)
         << message;
     // Tiles of 8192 x 8192 pixels over a 37 x 23 picture: OpenEXR's own limit
     // (4096, set by lazyrad) refuses them before allocating a tile's buffer.
