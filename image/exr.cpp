@@ -300,13 +300,17 @@ Image ReadOpenExr(Imf::InputFile& file, const std::string& name, ImageMetadata* 
     if (!hasRgb && !hasY) {
         ThrowUserError(FileLoc{name}, "OpenEXR file has neither R, G, B nor Y channels");
     }
-    long long valuesPerPixel = hasRgb ? 3 : 4;  // a lone Y is read apart, then copied
+    // Every channel but the colour's (R, G, B, or a lone Y) becomes a layer.
+    std::vector<std::string> layerNames;
     for (auto it = channels.begin(); it != channels.end(); ++it) {
         const std::string channel = it.name();
-        if (channel != "R" && channel != "G" && channel != "B" && (channel != "Y" || hasRgb)) {
-            ++valuesPerPixel;
-        }
+        if (channel == "R" || channel == "G" || channel == "B") continue;
+        if (channel == "Y" && !hasRgb) continue;
+        layerNames.push_back(channel);
     }
+    // A lone Y is read apart, then copied to the three colours.
+    const long long valuesPerPixel =
+        (hasRgb ? 3 : 4) + static_cast<long long>(layerNames.size());
     // The pixels are within maxPixels (ExrHeaderScan); every channel counts too.
     if (valuesPerPixel > 3 * maxPixels / (width * height)) {
         ThrowUserError(FileLoc{name}, "bad OpenEXR file: " + std::to_string(width) + " x " +
@@ -331,10 +335,7 @@ Image ReadOpenExr(Imf::InputFile& file, const std::string& name, ImageMetadata* 
         luminance.assign(image.PixelCount(), 0.0f);
         frame.insert("Y", Imf::Slice::Make(Imf::FLOAT, luminance.data(), window));
     }
-    for (auto it = channels.begin(); it != channels.end(); ++it) {
-        const std::string channel = it.name();
-        if (channel == "R" || channel == "G" || channel == "B") continue;
-        if (channel == "Y" && !hasRgb) continue;
+    for (const std::string& channel : layerNames) {
         image.layers.push_back({channel, std::vector<float>(image.PixelCount(), 0.0f)});
     }
     for (ImageLayer& layer : image.layers) {

@@ -31,11 +31,12 @@ bool EndsWith(const std::string& s, std::string_view suffix) {
            });
 }
 
-std::optional<OutputKind> KindOf(const std::string& path) {
+/// The output's kind by its name; a user error for any other name.
+OutputKind KindOf(const std::string& path) {
     if (EndsWith(path, ".exr")) return OutputKind::Exr;
     if (EndsWith(path, ".hdr") || EndsWith(path, ".pic")) return OutputKind::Hdr;
     if (EndsWith(path, ".png")) return OutputKind::Png;
-    return std::nullopt;
+    ThrowUserError("output '" + path + "' must end in .exr, .hdr, .pic or .png");
 }
 
 int PositiveInt(const std::string& option, const std::string& word) {
@@ -188,24 +189,22 @@ RvimageCommandLine ParseRvimageCommandLine(std::span<const std::string> args,
     cl.rtrace = ParseCommandLine(rest, warn);
     if (cl.rtrace.action != CommandLine::Action::Render) return cl;
     if (s.outputPath.empty()) ThrowUserError("no output picture (-o out.exr, .hdr or .png)");
-    if (!KindOf(s.outputPath))
-        ThrowUserError("output '" + s.outputPath + "' must end in .exr, .hdr, .pic or .png");
+    static_cast<void>(KindOf(s.outputPath));  // refused here, before the error file opens
     if (cl.rtrace.options.outputSpec != "v" && warn)
         warn("-o" + cl.rtrace.options.outputSpec + " ignored: the picture holds values (-ov)");
     return cl;
 }
 
 PicturePlan PlanPicture(const PictureSettings& s) {
-    const std::optional<OutputKind> kind = KindOf(s.outputPath);
-    if (!kind) ThrowUserError("output '" + s.outputPath + "' must end in .exr, .hdr, .pic or .png");
-    PicturePlan plan{[&s] {
-                         try {
-                             return SetupView(s.view);
-                         } catch (const Error& e) {
-                             ThrowUserError(std::string("bad view: ") + e.what());
-                         }
-                     }(),
-                     s.xResolution, s.yResolution, *kind};
+    PicturePlan plan;
+    plan.kind = KindOf(s.outputPath);
+    try {
+        plan.view = SetupView(s.view);
+    } catch (const Error& e) {
+        ThrowUserError(std::string("bad view: ") + e.what());
+    }
+    plan.width = s.xResolution;
+    plan.height = s.yResolution;
     double aspect = s.pixelAspect;
     NormalizeAspect(ViewAspect(plan.view), aspect, plan.width, plan.height);
     if (plan.width <= 0 || plan.height <= 0) ThrowUserError("picture resolution too small");
