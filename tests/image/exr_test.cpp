@@ -123,6 +123,18 @@ std::string ExrMessage(const std::string& bytes, long long maxPixels) {
     return "";
 }
 
+/// Where the offset table of a one-chunk scanline file starts: its one entry is
+/// the byte just after it (0 if not found). The header's closing null is the
+/// byte before.
+std::size_t OffsetTable(const std::string& bytes) {
+    for (std::size_t p = 0; p + 8 <= bytes.size(); ++p) {
+        std::uint64_t v;
+        std::memcpy(&v, &bytes[p], 8);
+        if (v == p + 8) return p;
+    }
+    return 0;
+}
+
 TEST(Exr, BytesInMemoryReadAsTheFile) {
     Image img = TestPattern(6, 4);
     img.AddLayer("Z").values.assign(img.PixelCount(), 2.5f);
@@ -169,16 +181,8 @@ TEST(Exr, RefusesPicturesAboveThePixelLimitBeforeReadingThem) {
     ASSERT_NE(at, std::string::npos);
     const std::int32_t box[4] = {0, 0, 32767, 32767};
     std::memcpy(&big[at + window.size() + 4], box, sizeof box);  // after the size
-    // The offset table of a 4-line ZIP file is one entry, the byte just after it.
-    std::size_t table = 0;
-    for (std::size_t p = 0; p + 8 <= rgb.size(); ++p) {
-        std::uint64_t v;
-        std::memcpy(&v, &rgb[p], 8);
-        if (v == p + 8) {
-            table = p;
-            break;
-        }
-    }
+    // The offset table of a 4-line ZIP file is one entry.
+    const std::size_t table = OffsetTable(rgb);
     ASSERT_NE(table, 0u);
     const std::size_t entries = 32768 / 16;  // ZIP: 16 scanlines a chunk
     std::string offsets;
@@ -346,6 +350,34 @@ TEST(Exr, RefusesHeadersThatDeclareMoreThanTheFileHolds) {
                   "big.exr: cannot read OpenEXR file: Cannot read image file \"big.exr\". The "
                   "width of the tiles exceeds the maximum width of 4096pixels.");
     }
+    // One attribute added at the header's end (before its closing null, just
+    // ahead of the offset table), for the other refusals.
+    const std::size_t headerEnd = OffsetTable(good) - 1;
+    ASSERT_NE(headerEnd + 1, 0u);
+    auto withAttribute = [&](const std::string& attribute) {
+        return good.substr(0, headerEnd) + attribute + good.substr(headerEnd);
+    };
+    auto le32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const std::string start = "big.exr: byte " + std::to_string(headerEnd) + ": bad OpenEXR file: ";
+    // A preview image of 65536 x 65536 pixels in 8 bytes.
+    EXPECT_EQ(ExrMessage(withAttribute(std::string("preview\0preview\0", 16) + le32(8) +
+                                       le32(65536) + le32(65536)),
+                         kMaxPicturePixels),
+              start +
+                  "preview image \"preview\" of 65536 x 65536 pixels, more than the bytes left");
+    // A stringvector whose one string claims 1000 bytes of its 8.
+    EXPECT_EQ(ExrMessage(withAttribute(std::string("sv\0stringvector\0", 16) + le32(8) +
+                                       le32(1000) + "abcd"),
+                         kMaxPicturePixels),
+              start + "stringvector \"sv\" overruns the file");
+    // A name of 40 characters without the long-names flag; a negative size.
+    EXPECT_EQ(ExrMessage(withAttribute(std::string(40, 'n') + std::string("\0int\0", 5) +
+                                       le32(4) + le32(0)),
+                         kMaxPicturePixels),
+              start + "name longer than 31 characters");
+    EXPECT_EQ(ExrMessage(withAttribute(std::string("x\0string\0", 9) + le32(0xffffffffu)),
+                         kMaxPicturePixels),
+              start + "attribute \"x\" of negative size");
     // Cut inside the header.
     EXPECT_EQ(ExrMessage(good.substr(0, software + 2), kMaxPicturePixels),
               "big.exr: byte " + std::to_string(software) + ": bad OpenEXR file: header cut short");

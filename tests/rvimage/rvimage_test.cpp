@@ -101,6 +101,34 @@ TEST(RvimageCommandLine, RejectsBadInput) {
     EXPECT_NO_THROW(parse({"-o", "a.HDR", "s.rad"}));
 }
 
+TEST(PlanPicture, FitsTheViewAndNamesBadInput) {
+    auto plan = [](std::vector<std::string> args) {
+        args.insert(args.begin(), "rvimage");
+        return PlanPicture(ParseRvimageCommandLine(args, {}).settings);
+    };
+    // Radiance's vwrays -vtv -vh 90 -vv 45 -x 100 -y 100 -d: -x 100 -y 41.
+    const PicturePlan wide = plan({"-vh", "90", "-vv", "45", "-x", "100", "-y", "100", "-o",
+                                   "a.png", "s.rad"});
+    EXPECT_EQ(wide.width, 100);
+    EXPECT_EQ(wide.height, 41);
+    EXPECT_EQ(wide.kind, OutputKind::Png);
+    EXPECT_EQ(plan({"-vh", "45", "-vv", "90", "-x", "100", "-y", "100", "-o", "a.pic", "s.rad"})
+                  .width,
+              41);
+    auto message = [&](std::vector<std::string> args) -> std::string {
+        try {
+            static_cast<void>(plan(std::move(args)));
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_EQ(message({"-vh", "0", "-o", "a.exr", "s.rad"}),
+              "bad view: illegal horizontal view size");
+    EXPECT_EQ(message({"-o", "a.tif", "s.rad"}),
+              "output 'a.tif' must end in .exr, .hdr, .pic or .png");
+}
+
 TEST(ProjectToView, InvertsViewRay) {
     for (ViewType type : {ViewType::Perspective, ViewType::Parallel}) {
         View v;
